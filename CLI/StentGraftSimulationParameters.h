@@ -1,0 +1,36 @@
+/// \file StentGraftSimulationParameters.h
+/// The CLI edge of StentGraftSimulation: the single RAS → LPS conversion, the copy of the parsed
+/// XML parameters into the Logic's parameter structs, and ValidateParameters, which checks every
+/// range and cross-parameter rule once at entry (STYLE.md B4), before any file is read.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "GrowLumenRegion.h"
+#include "Types.h"
+
+namespace sgp
+{
+
+/// RAS (as Slicer sends points declared `coordinateSystem="ras"`) to LPS: (x, y, z) → (−x, −y, z).
+/// \throws InputError unless `ras` has three components.
+Point3 RasToLps(const std::vector<float>& ras);
+
+/// Copies the segmentation parameters; `thresholdMode` is "auto" or "manual" (TCLAP already
+/// restricts it to these). \throws InputError for any other mode.
+RegionGrowingParams MakeRegionGrowingParams(const std::string& thresholdMode,
+                                            double lowerHu,
+                                            double upperHu,
+                                            double windowSigmas,
+                                            double seedMinimumHu,
+                                            double leakOpeningRadiusMm,
+                                            double maximumLumenVolumeMl);
+
+/// Checks the inputs a run needs: an input volume, a seed of three numbers, and parameters in
+/// range. \throws InputError naming the value and what was expected.
+void ValidateParameters(const std::string& inputVolume,
+                        const std::vector<float>& seed,
+                        const RegionGrowingParams& params);
+
+} // namespace sgp

@@ -1,0 +1,131 @@
+#include "ReadCtImage.h"
+
+#include <filesystem>
+
+#include <itkGDCMImageIO.h>
+#include <itkGDCMSeriesFileNames.h>
+#include <itkImageFileReader.h>
+#include <itkImageIOFactory.h>
+#include <itkImageSeriesReader.h>
+
+#include "../Errors.h"
+
+namespace sgp
+{
+
+namespace
+{
+
+std::string FirstLine(const std::string& text)
+{
+  const auto end = text.find_first_of("\r\n");
+  return end == std::string::npos ? text : text.substr(0, end);
+}
+
+std::string SizeText(const std::vector<std::size_t>& sizes)
+{
+  std::string text;
+  for (std::size_t a = 0; a < sizes.size(); ++a)
+  {
+    text += (a ? " × " : "") + std::to_string(sizes[a]);
+  }
+  return text + " voxels";
+}
+
+CtImage::Pointer ReadDicomSeries(const std::string& folder, std::vector<std::string>& warnings)
+{
+  auto names = itk::GDCMSeriesFileNames::New();
+  names->SetUseSeriesDetails(true);
+  names->SetDirectory(folder);
+  const std::vector<std::string> series = names->GetSeriesUIDs();
+  if (series.empty())
+  {
+    throw InputError("Cannot read the input volume '" + folder +
+                     "': the folder holds no DICOM series; give a folder of DICOM slices or a volume file.");
+  }
+  std::string chosen = series.front();
+  for (const std::string& uid : series)
+  {
+    if (names->GetFileNames(uid).size() > names->GetFileNames(chosen).size())
+    {
+      chosen = uid;
+    }
+  }
+  const std::vector<std::string> files = names->GetFileNames(chosen);
+  if (series.size() > 1)
+  {
+    warnings.push_back("The folder '" + folder + "' holds " + std::to_string(series.size()) +
+                       " DICOM series; read the largest (" + std::to_string(files.size()) + " slices, " + chosen + ").");
+  }
+  if (files.size() < 2)
+  {
+    throw InputError("The input volume '" + folder + "' is 2-D (a DICOM series of " + std::to_string(files.size()) +
+                     " slice); expected a 3-D CT volume.");
+  }
+  auto reader = itk::ImageSeriesReader<CtImage>::New();
+  reader->SetImageIO(itk::GDCMImageIO::New());
+  reader->SetFileNames(files);
+  reader->Update();
+  return reader->GetOutput();
+}
+
+CtImage::Pointer ReadVolumeFile(const std::string& path)
+{
+  itk::ImageIOBase::Pointer io =
+    itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::IOFileModeEnum::ReadMode);
+  if (!io)
+  {
+    const bool exists = std::filesystem::exists(path);
+    throw InputError("Cannot read the input volume '" + path + "': " +
+                     (exists ? "no reader recognises it (expected NRRD, NIfTI, MetaImage or a DICOM folder)"
+                             : std::string("the file does not exist")) +
+                     "; give a readable 3-D CT volume.");
+  }
+  io->SetFileName(path);
+  io->ReadImageInformation();
+  std::vector<std::size_t> sizes;
+  for (unsigned a = 0; a < io->GetNumberOfDimensions(); ++a)
+  {
+    sizes.push_back(io->GetDimensions(a));
+  }
+  const bool thin = sizes.size() == 3 && (sizes[0] < 2 || sizes[1] < 2 || sizes[2] < 2);
+  if (sizes.size() < 3 || thin)
+  {
+    throw InputError("The input volume '" + path + "' is 2-D (" + SizeText(sizes) + "); expected a 3-D CT volume.");
+  }
+  if (sizes.size() > 3)
+  {
+    throw InputError("The input volume '" + path + "' is " + std::to_string(sizes.size()) + "-D (" + SizeText(sizes) +
+                     "); expected a 3-D CT volume.");
+  }
+  if (io->GetNumberOfComponents() != 1)
+  {
+    throw InputError("The input volume '" + path + "' has " + std::to_string(io->GetNumberOfComponents()) +
+                     " components per voxel (" + io->GetPixelTypeAsString(io->GetPixelType()) +
+                     "); expected a scalar CT volume in HU.");
+  }
+  auto reader = itk::ImageFileReader<CtImage>::New();
+  reader->SetImageIO(io);
+  reader->SetFileName(path);
+  reader->Update();
+  return reader->GetOutput();
+}
+
+} // namespace
+
+CtVolume ReadCtImage(const std::string& path)
+{
+  CtVolume volume;
+  try
+  {
+    volume.image = std::filesystem::is_directory(path) ? ReadDicomSeries(path, volume.warnings) : ReadVolumeFile(path);
+  }
+  catch (const itk::ExceptionObject& e)
+  {
+    throw InputError("Cannot read the input volume '" + path + "': " + FirstLine(e.GetDescription()) +
+                     "; give a readable 3-D CT volume.");
+  }
+  return volume;
+}
+
+} // namespace sgp

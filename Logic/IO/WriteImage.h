@@ -1,0 +1,20 @@
+/// \file WriteImage.h
+/// Writes CT volumes and label maps with ITK (format from the extension: .nrrd, .nhdr, .nii,
+/// .nii.gz, .mha, .mhd), gzip-compressed where the format allows, on the image's own grid (LPS
+/// geometry as ITK stores it).
+///
+/// \throws InputError naming the path when ITK cannot write it (unknown extension, no such
+///         folder, no permission, disk full).
+#pragma once
+
+#include <string>
+
+#include "../Types.h"
+
+namespace sgp
+{
+
+void WriteLabelMap(const LabelImage& image, const std::string& path);
+void WriteCtImage(const CtImage& image, const std::string& path);
+
+} // namespace sgp

@@ -1,0 +1,68 @@
+/// \file MaskGrid.h
+/// Binary-mask operations on a cropped box of voxels, used by the lumen segmentation.
+///
+/// A MaskGrid is a box of `size[0] × size[1] × size[2]` voxels stored with i fastest (flat index
+/// `i + size[0]·(j + size[1]·k)`), holding 0 (background) or 1 (foreground) per voxel. It lives in
+/// index space only (the caller keeps the box's place in the image); voxels outside the box count
+/// as background. Connectivity is 6 (faces), as in ITK's connected-threshold filter.
+///
+/// Costs are linear in the number of voxels of the box, times the number of ball offsets for the
+/// morphology, which visits foreground (erosion) or boundary (dilation) voxels only.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace sgp
+{
+
+struct MaskGrid
+{
+  std::array<long, 3> size{ 0, 0, 0 };
+  std::vector<std::uint8_t> voxels; ///< size[0]·size[1]·size[2] values, 0 or 1
+
+  MaskGrid() = default;
+  explicit MaskGrid(const std::array<long, 3>& boxSize);
+
+  long Count() const { return size[0] * size[1] * size[2]; }
+  long Flat(long i, long j, long k) const { return i + size[0] * (j + size[1] * k); }
+  /// Inverse of Flat.
+  std::array<long, 3> Ijk(long flat) const;
+  /// Number of foreground voxels.
+  long CountForeground() const;
+};
+
+/// Offsets (di, dj, dk) of the voxels of an ellipsoidal ball with the given radii in voxels
+/// (a radius of 0 along an axis makes the ball flat along it). Includes (0, 0, 0).
+std::vector<std::array<int, 3>> BallOffsets(const std::array<int, 3>& radiusIjk);
+
+/// Morphological erosion by `ball`: a voxel stays foreground when every ball offset from it is
+/// foreground and inside the box.
+MaskGrid Erode(const MaskGrid& mask, const std::vector<std::array<int, 3>>& ball);
+
+/// Morphological dilation by `ball`, clipped to the box.
+MaskGrid Dilate(const MaskGrid& mask, const std::vector<std::array<int, 3>>& ball);
+
+/// The 6-connected foreground component that contains `seedFlat`; empty (all 0) when the seed
+/// voxel is background.
+MaskGrid ConnectedComponent(const MaskGrid& mask, long seedFlat);
+
+/// Sizes (voxel counts) of all 6-connected foreground components, and the flat index of one
+/// voxel of the largest (-1 when there is no foreground).
+struct ComponentSizes
+{
+  std::vector<long> sizes;
+  long largestSize = 0;
+  long largestVoxel = -1;
+};
+ComponentSizes MeasureComponents(const MaskGrid& mask);
+
+/// Sets to foreground every background voxel that is not 6-connected to the box's border
+/// through background (cavities inside the lumen).
+void FillHoles(MaskGrid& mask);
+
+/// Grows `mask` by up to `steps` 6-neighbour layers into voxels where `accept[flat]` is true.
+void GrowConstrained(MaskGrid& mask, const std::vector<bool>& accept, int steps);
+
+} // namespace sgp

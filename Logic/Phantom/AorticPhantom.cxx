@@ -1,0 +1,476 @@
+#include "AorticPhantom.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <random>
+
+#include <Eigen/Dense>
+
+#include "../Errors.h"
+#include "../Format.h"
+
+namespace sgp
+{
+
+namespace
+{
+
+constexpr double pi = 3.14159265358979323846;
+constexpr double renalRadiusMm = 3.0;
+constexpr double visceralRadiusMm = 3.5;
+constexpr double distalNeckLengthMm = 20.0;
+constexpr double commonIliacLengthMm = 55.0;
+constexpr double commonIliacAngleDeg = 25.0;
+constexpr double vertebraRadiusMm = 20.0;
+constexpr double corticalThicknessMm = 2.0;
+constexpr double corticalHu = 900.0;
+constexpr double cancellousHu = 250.0;
+constexpr double marginMm = 10.0;
+
+/// A vessel to voxelize: an axis polyline and the radius as a function of arc length from its
+/// first vertex.
+struct Tube
+{
+  std::string name;
+  std::vector<Point3> axis;
+  std::function<double(double)> radiusAt;
+  double maxRadius = 0.0;
+};
+
+struct Ellipsoid
+{
+  Point3 centre;
+  Point3 semiAxes;
+};
+
+struct Anatomy
+{
+  std::vector<Tube> tubes;
+  std::vector<Ellipsoid> kidneys;
+  bool column = false;
+  double columnY = 0.0; ///< centre of the vertebral column (x = 0), LPS mm
+  PhantomTruth truth;
+};
+
+/// Standard normal CDF, with the hard step for an unblurred edge.
+double EdgeProfile(double signedDistance, double sigma)
+{
+  if (sigma <= 0.0)
+  {
+    return signedDistance < 0.0 ? 1.0 : (signedDistance > 0.0 ? 0.0 : 0.5);
+  }
+  return 0.5 * std::erfc(signedDistance / (sigma * std::sqrt(2.0)));
+}
+
+Point3 Unit(double x, double y, double z)
+{
+  return Point3(x, y, z).normalized();
+}
+
+Tube StraightTube(const std::string& name, const std::vector<Point3>& axis, double radius)
+{
+  return { name, axis, [radius](double) { return radius; }, radius };
+}
+
+Anatomy BuildAnatomy(const PhantomParams& p)
+{
+  Anatomy anatomy;
+  PhantomTruth& truth = anatomy.truth;
+  const double rNeck = p.neckDiameterMm / 2, rDistal = p.distalNeckDiameterMm / 2;
+  const double sacBottom = distalNeckLengthMm, sacTop = sacBottom + p.aneurysmLengthMm;
+  const double siteZ = sacTop + p.neckLengthMm; // lower edge of the lowest (right) renal ostium
+  const double rightRenalZ = siteZ + renalRadiusMm, leftRenalZ = rightRenalZ + 6.0;
+  const double smaZ = siteZ + 20.0, coeliacZ = siteZ + 35.0, topZ = siteZ + 50.0;
+  const double amplitude = p.maxAneurysmDiameterMm / 2 - 0.5 * (rNeck + rDistal);
+  const auto radiusAtZ = [=](double z) {
+    if (z >= sacTop)
+      return rNeck;
+    if (z < sacBottom)
+      return rDistal;
+    const double u = (sacTop - z) / (sacTop - sacBottom);
+    const double bump = std::sin(pi * u);
+    return rNeck + (rDistal - rNeck) * u + amplitude * bump * bump;
+  };
+  double rMax = 0.0, zMax = sacTop;
+  for (double z = sacBottom; z <= sacTop; z += 0.01)
+  {
+    if (radiusAtZ(z) > rMax)
+    {
+      rMax = radiusAtZ(z);
+      zMax = z;
+    }
+  }
+  anatomy.tubes.push_back(
+    { "aorta", { Point3(0, 0, topZ), Point3(0, 0, 0) }, [=](double s) { return radiusAtZ(topZ - s); },
+      std::max({ rNeck, rDistal, rMax }) });
+
+  const double angle = commonIliacAngleDeg * pi / 180.0;
+  Point3 iliacEnd[2];
+  const char* sideName[2] = { "right", "left" };
+  const double iliacRadius[2] = { p.rightIliacDiameterMm / 2, p.leftIliacDiameterMm / 2 };
+  for (int side = 0; side < 2; ++side)
+  {
+    const double lateral = side == 0 ? -1.0 : 1.0; // patient right is -x in LPS
+    const std::string prefix = sideName[side];
+    const double r = iliacRadius[side];
+    iliacEnd[side] = commonIliacLengthMm * Point3(lateral * std::sin(angle), 0, -std::cos(angle));
+    anatomy.tubes.push_back(StraightTube(prefix + "Iliac", { Point3::Zero(), iliacEnd[side] }, r));
+    anatomy.tubes.push_back(StraightTube(prefix + "ExternalIliac",
+                                         { iliacEnd[side], iliacEnd[side] + 70.0 * Unit(lateral * 0.17, -0.15, -0.97) },
+                                         0.75 * r));
+    anatomy.tubes.push_back(StraightTube(prefix + "InternalIliac",
+                                         { iliacEnd[side], iliacEnd[side] + 40.0 * Unit(lateral * 0.45, 0.55, -0.7) },
+                                         0.55 * r));
+    const double renalZ = side == 0 ? rightRenalZ : leftRenalZ;
+    const Point3 hilum(lateral * 64.0, 10.0, renalZ - 5.0);
+    anatomy.tubes.push_back(StraightTube(prefix + "Renal", { Point3(0, 0, renalZ), hilum }, renalRadiusMm));
+    if (p.includeKidneys)
+    {
+      anatomy.kidneys.push_back({ Point3(lateral * 80.0, 15.0, renalZ - 10.0), Point3(22.0, 18.0, 50.0) });
+    }
+    truth.landmarks.push_back({ prefix + "RenalOstium", Point3(lateral * rNeck, 0, renalZ) });
+    truth.landmarks.push_back({ prefix + "IliacBifurcation", iliacEnd[side] });
+  }
+  anatomy.tubes.push_back(StraightTube(
+    "superiorMesenteric", { Point3(0, 0, smaZ), Point3(0, -35, smaZ - 5), Point3(0, -45, smaZ - 60) }, visceralRadiusMm));
+  anatomy.tubes.push_back(
+    StraightTube("coeliac", { Point3(0, 0, coeliacZ), Point3(0, -30, coeliacZ + 5) }, visceralRadiusMm));
+  if (p.includeBone)
+  {
+    anatomy.column = true;
+    anatomy.columnY = rMax + p.boneGapMm + vertebraRadiusMm;
+  }
+
+  truth.landmarks.push_back({ "aorticBifurcation", Point3::Zero() });
+  truth.landmarks.push_back({ "proximalImplantationSite", Point3(0, 0, siteZ) });
+  truth.landmarks.push_back({ "superiorMesentericOstium", Point3(0, -rNeck, smaZ) });
+  truth.landmarks.push_back({ "coeliacOstium", Point3(0, -rNeck, coeliacZ) });
+  truth.landmarks.push_back({ "maxAneurysmDiameterLevel", Point3(0, 0, zMax) });
+  PhantomSizing& sizing = truth.sizing;
+  sizing.proximalNeckDiameter = 2 * radiusAtZ(siteZ);
+  sizing.neckDiameter15mm = 2 * radiusAtZ(siteZ - 15.0);
+  sizing.maxAneurysmDiameter = 2 * rMax;
+  sizing.distalNeckMinDiameter = 2 * rDistal;
+  sizing.rightIliacDiameter = p.rightIliacDiameterMm;
+  sizing.leftIliacDiameter = p.leftIliacDiameterMm;
+  sizing.proximalNeckLength = p.neckLengthMm;
+  sizing.proximalSiteToBifurcationLength = siteZ;
+  sizing.rightIliacLength = commonIliacLengthMm;
+  sizing.leftIliacLength = commonIliacLengthMm;
+  truth.seedLps = Point3(0, 0, 0.5 * (sacTop + sacBottom));
+  return anatomy;
+}
+
+/// Samples each tube's axis every 1 mm (and at its end) with the radius there.
+void SampleVessels(const Anatomy& anatomy, PhantomTruth& truth)
+{
+  for (const Tube& tube : anatomy.tubes)
+  {
+    std::vector<Point3> points;
+    std::vector<double> radii;
+    double start = 0.0;
+    for (std::size_t k = 0; k + 1 < tube.axis.size(); ++k)
+    {
+      const Point3 a = tube.axis[k], b = tube.axis[k + 1];
+      const double length = (b - a).norm();
+      for (double s = 0.0; s < length; s += 1.0)
+      {
+        points.push_back(a + (b - a) * (s / length));
+        radii.push_back(tube.radiusAt(start + s));
+      }
+      start += length;
+    }
+    points.push_back(tube.axis.back());
+    radii.push_back(tube.radiusAt(start));
+    PhantomVessel vessel{ tube.name, Points(points.size(), 3), Eigen::VectorXd(radii.size()) };
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      vessel.axis.row(i) = points[i].transpose();
+      vessel.radiusMm[i] = radii[i];
+    }
+    truth.vessels.push_back(vessel);
+  }
+}
+
+/// LPS bounding box {min, max} of the anatomy plus the margin.
+std::array<Point3, 2> AnatomyBounds(const Anatomy& anatomy)
+{
+  Point3 lo = Point3::Constant(1e9), hi = Point3::Constant(-1e9);
+  for (const Tube& tube : anatomy.tubes)
+  {
+    for (const Point3& v : tube.axis)
+    {
+      lo = lo.cwiseMin(v - Point3::Constant(tube.maxRadius));
+      hi = hi.cwiseMax(v + Point3::Constant(tube.maxRadius));
+    }
+  }
+  for (const Ellipsoid& e : anatomy.kidneys)
+  {
+    lo = lo.cwiseMin(e.centre - e.semiAxes);
+    hi = hi.cwiseMax(e.centre + e.semiAxes);
+  }
+  if (anatomy.column)
+  {
+    lo = lo.cwiseMin(Point3(-vertebraRadiusMm, anatomy.columnY - vertebraRadiusMm, lo.z()));
+    hi = hi.cwiseMax(Point3(vertebraRadiusMm, anatomy.columnY + vertebraRadiusMm, hi.z()));
+  }
+  return { lo - Point3::Constant(marginMm), hi + Point3::Constant(marginMm) };
+}
+
+/// The voxel grid: LPS of voxel (i,j,k) is origin + direction · diag(spacing) · (i,j,k).
+struct Grid
+{
+  Point3 origin;
+  Eigen::Matrix3d direction;
+  Eigen::Vector3d spacing;
+  std::array<long, 3> size;
+  Eigen::Matrix3d IndexToLps() const { return direction * spacing.asDiagonal(); }
+  long Flat(long i, long j, long k) const { return i + size[0] * (j + size[1] * k); }
+};
+
+Grid MakeGrid(const PhantomParams& p, const std::array<Point3, 2>& bounds)
+{
+  Grid grid;
+  grid.direction = p.directionLps;
+  grid.spacing = Eigen::Vector3d(p.spacingMm[0], p.spacingMm[1], p.spacingMm[2]);
+  Eigen::Vector3d uMin = Eigen::Vector3d::Constant(1e18), uMax = -uMin;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const Point3 c((corner & 1 ? bounds[1] : bounds[0]).x(), (corner & 2 ? bounds[1] : bounds[0]).y(),
+                   (corner & 4 ? bounds[1] : bounds[0]).z());
+    const Eigen::Vector3d u = grid.direction.transpose() * c;
+    uMin = uMin.cwiseMin(u);
+    uMax = uMax.cwiseMax(u);
+  }
+  Eigen::Vector3d first = uMin;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (p.sizeVoxels[a] > 0)
+    {
+      grid.size[a] = p.sizeVoxels[a];
+      first[a] = 0.5 * (uMin[a] + uMax[a]) - 0.5 * (grid.size[a] - 1) * grid.spacing[a];
+    }
+    else
+    {
+      grid.size[a] = static_cast<long>(std::ceil((uMax[a] - uMin[a]) / grid.spacing[a])) + 1;
+    }
+  }
+  grid.origin = grid.direction * first;
+  return grid;
+}
+
+/// Calls f(flat, lps) for every voxel of the grid whose centre may lie within the LPS box.
+template <typename Function>
+void ForEachVoxelNear(const Grid& grid, const Point3& lo, const Point3& hi, Function f)
+{
+  const Eigen::Matrix3d toIndex = grid.IndexToLps().inverse();
+  Eigen::Vector3d iMin = Eigen::Vector3d::Constant(1e18), iMax = -iMin;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const Point3 c((corner & 1 ? hi : lo).x(), (corner & 2 ? hi : lo).y(), (corner & 4 ? hi : lo).z());
+    const Eigen::Vector3d index = toIndex * (c - grid.origin);
+    iMin = iMin.cwiseMin(index);
+    iMax = iMax.cwiseMax(index);
+  }
+  std::array<long, 3> first{}, last{};
+  for (int a = 0; a < 3; ++a)
+  {
+    first[a] = std::max(0L, static_cast<long>(std::floor(iMin[a])));
+    last[a] = std::min(grid.size[a] - 1, static_cast<long>(std::ceil(iMax[a])));
+  }
+  const Eigen::Matrix3d m = grid.IndexToLps();
+  for (long k = first[2]; k <= last[2]; ++k)
+  {
+    for (long j = first[1]; j <= last[1]; ++j)
+    {
+      for (long i = first[0]; i <= last[0]; ++i)
+      {
+        f(grid.Flat(i, j, k), Point3(grid.origin + m * Eigen::Vector3d(double(i), double(j), double(k))));
+      }
+    }
+  }
+}
+
+/// Signed distance to the tube's surface by the closest-axis-point rule (see the header).
+double TubeSignedDistance(const Tube& tube, const Point3& x)
+{
+  double best = 1e18, bestS = 0.0, start = 0.0;
+  for (std::size_t k = 0; k + 1 < tube.axis.size(); ++k)
+  {
+    const Point3 a = tube.axis[k], ab = tube.axis[k + 1] - a;
+    const double length = ab.norm();
+    const double t = std::clamp((x - a).dot(ab) / (length * length), 0.0, 1.0);
+    const double d = (x - (a + t * ab)).norm();
+    if (d < best)
+    {
+      best = d;
+      bestS = start + t * length;
+    }
+    start += length;
+  }
+  return best - tube.radiusAt(bestS);
+}
+
+double EllipsoidSignedDistance(const Ellipsoid& e, const Point3& x)
+{
+  const Eigen::Vector3d q = (x - e.centre).cwiseQuotient(e.semiAxes);
+  const double f = q.norm();
+  if (f < 1e-9)
+  {
+    return -e.semiAxes.minCoeff();
+  }
+  const double gradient = (q.cwiseQuotient(e.semiAxes) / f).norm();
+  return (f - 1.0) / gradient;
+}
+
+} // namespace
+
+void ValidatePhantomParams(const PhantomParams& p)
+{
+  const auto check = [](const std::string& name, double value, double lo, double hi, const char* unit) {
+    if (!(value >= lo && value <= hi))
+    {
+      throw InputError(name + " is " + FormatNumber(value, 2) + " " + unit + "; expected " + FormatNumber(lo, 1) +
+                       " to " + FormatNumber(hi, 1) + " " + unit + ".");
+    }
+  };
+  const char* axes[3] = { "i", "j", "k" };
+  int sized = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    check(std::string("spacingMm (") + axes[a] + ")", p.spacingMm[a], 0.2, 5.0, "mm");
+    if (p.sizeVoxels[a] != 0)
+    {
+      check(std::string("sizeVoxels (") + axes[a] + ")", p.sizeVoxels[a], 16, 2048, "voxels");
+      ++sized;
+    }
+  }
+  if (sized != 0 && sized != 3)
+  {
+    throw InputError("sizeVoxels must be 0,0,0 (fit the anatomy) or three sizes; got " +
+                     std::to_string(p.sizeVoxels[0]) + "," + std::to_string(p.sizeVoxels[1]) + "," +
+                     std::to_string(p.sizeVoxels[2]) + ".");
+  }
+  const double orthonormalError = (p.directionLps.transpose() * p.directionLps - Eigen::Matrix3d::Identity()).norm();
+  if (!(orthonormalError < 1e-4))
+  {
+    throw InputError("directionLps is not orthonormal (|DᵀD − I| = " + FormatNumber(orthonormalError, 4) +
+                     "); give three unit, mutually perpendicular axis directions.");
+  }
+  check("neckDiameterMm", p.neckDiameterMm, 12, 40, "mm");
+  check("neckLengthMm", p.neckLengthMm, 2, 60, "mm");
+  check("maxAneurysmDiameterMm", p.maxAneurysmDiameterMm, std::max(p.neckDiameterMm, p.distalNeckDiameterMm), 100,
+        "mm");
+  check("aneurysmLengthMm", p.aneurysmLengthMm, 20, 200, "mm");
+  check("distalNeckDiameterMm", p.distalNeckDiameterMm, 10, 40, "mm");
+  check("rightIliacDiameterMm", p.rightIliacDiameterMm, 5, 30, "mm");
+  check("leftIliacDiameterMm", p.leftIliacDiameterMm, 5, 30, "mm");
+  check("lumenHu", p.lumenHu, 100, 1000, "HU");
+  check("tissueHu", p.tissueHu, -200, 100, "HU");
+  check("blurSigmaMm", p.blurSigmaMm, 0, 3, "mm");
+  check("noiseSigmaHu", p.noiseSigmaHu, 0, 200, "HU");
+  check("noiseSeed", p.noiseSeed, 0, 2147483647.0, "");
+  check("boneGapMm", p.boneGapMm, 0.5, 50, "mm");
+  check("kidneyHu", p.kidneyHu, 50, 400, "HU");
+}
+
+AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallback& progress)
+{
+  ValidatePhantomParams(p);
+  Anatomy anatomy = BuildAnatomy(p);
+  SampleVessels(anatomy, anatomy.truth);
+  const Grid grid = MakeGrid(p, AnatomyBounds(anatomy));
+  const long count = grid.size[0] * grid.size[1] * grid.size[2];
+  std::vector<float> contrast(static_cast<std::size_t>(count), 0.0f);
+  std::vector<unsigned char> labels(static_cast<std::size_t>(count), TissueLabel);
+  const double reach = 4.0 * p.blurSigmaMm + grid.spacing.norm();
+
+  for (std::size_t t = 0; t < anatomy.tubes.size(); ++t)
+  {
+    ReportProgress(progress, 0.7 * double(t) / anatomy.tubes.size(), "Vessels");
+    const Tube& tube = anatomy.tubes[t];
+    Point3 lo = Point3::Constant(1e9), hi = Point3::Constant(-1e9);
+    for (const Point3& v : tube.axis)
+    {
+      lo = lo.cwiseMin(v - Point3::Constant(tube.maxRadius + reach));
+      hi = hi.cwiseMax(v + Point3::Constant(tube.maxRadius + reach));
+    }
+    const double lumenContrast = p.lumenHu - p.tissueHu;
+    ForEachVoxelNear(grid, lo, hi, [&](long flat, const Point3& x) {
+      const double sd = TubeSignedDistance(tube, x);
+      contrast[flat] = std::max(contrast[flat], float(lumenContrast * EdgeProfile(sd, p.blurSigmaMm)));
+      if (sd < 0.0)
+      {
+        labels[flat] = LumenLabel;
+      }
+    });
+  }
+  for (const Ellipsoid& kidney : anatomy.kidneys)
+  {
+    ForEachVoxelNear(grid, kidney.centre - kidney.semiAxes - Point3::Constant(reach),
+                     kidney.centre + kidney.semiAxes + Point3::Constant(reach), [&](long flat, const Point3& x) {
+                       const double sd = EllipsoidSignedDistance(kidney, x);
+                       contrast[flat] =
+                         std::max(contrast[flat], float((p.kidneyHu - p.tissueHu) * EdgeProfile(sd, p.blurSigmaMm)));
+                       if (sd < 0.0 && labels[flat] == TissueLabel)
+                       {
+                         labels[flat] = KidneyLabel;
+                       }
+                     });
+  }
+  if (anatomy.column)
+  {
+    ReportProgress(progress, 0.75, "Vertebral column");
+    const double r = vertebraRadiusMm + reach;
+    ForEachVoxelNear(grid, Point3(-r, anatomy.columnY - r, -1e6), Point3(r, anatomy.columnY + r, 1e6),
+                     [&](long flat, const Point3& x) {
+                       const double rho = std::hypot(x.x(), x.y() - anatomy.columnY);
+                       const double outer = rho - vertebraRadiusMm, inner = outer + corticalThicknessMm;
+                       const double bone = (corticalHu - p.tissueHu) * EdgeProfile(outer, p.blurSigmaMm) -
+                                           (corticalHu - cancellousHu) * EdgeProfile(inner, p.blurSigmaMm);
+                       contrast[flat] = std::max(contrast[flat], float(bone));
+                       if (outer < 0.0 && labels[flat] == TissueLabel)
+                       {
+                         labels[flat] = BoneLabel;
+                       }
+                     });
+  }
+
+  ReportProgress(progress, 0.8, "Noise");
+  AorticPhantom phantom;
+  const auto makeImage = [&](auto image) {
+    typename decltype(image)::ObjectType::RegionType region;
+    region.SetSize({ { itk::SizeValueType(grid.size[0]), itk::SizeValueType(grid.size[1]),
+                       itk::SizeValueType(grid.size[2]) } });
+    image->SetRegions(region);
+    image->SetSpacing(grid.spacing.data());
+    image->SetOrigin(grid.origin.data());
+    typename decltype(image)::ObjectType::DirectionType direction;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c)
+        direction(r, c) = grid.direction(r, c);
+    image->SetDirection(direction);
+    image->Allocate();
+    return image;
+  };
+  phantom.ct = makeImage(CtImage::New());
+  phantom.labels = makeImage(LabelImage::New());
+  std::mt19937 generator(static_cast<std::mt19937::result_type>(p.noiseSeed));
+  std::normal_distribution<double> noise(0.0, p.noiseSigmaHu > 0 ? p.noiseSigmaHu : 1.0);
+  short* ct = phantom.ct->GetBufferPointer();
+  long lumenVoxels = 0;
+  for (long flat = 0; flat < count; ++flat)
+  {
+    const double value = p.tissueHu + contrast[flat] + (p.noiseSigmaHu > 0 ? noise(generator) : 0.0);
+    ct[flat] = static_cast<short>(std::lround(std::clamp(value, -1024.0, 3071.0)));
+    phantom.labels->GetBufferPointer()[flat] = labels[flat];
+    lumenVoxels += labels[flat] == LumenLabel ? 1 : 0;
+  }
+  phantom.truth = anatomy.truth;
+  phantom.truth.lumenVolumeMl = lumenVoxels * grid.spacing.prod() / 1000.0;
+  ReportProgress(progress, 1.0, "Done");
+  return phantom;
+}
+
+} // namespace sgp

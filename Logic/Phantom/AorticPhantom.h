@@ -1,0 +1,133 @@
+/// \file AorticPhantom.h
+/// A synthetic CT angiography volume of an aorto-iliac tree with an infrarenal aneurysm, with its
+/// analytic ground truth — the oracle of the project's tests (STYLE.md B6).
+///
+/// Anatomy, in LPS mm with the aortic bifurcation at the origin and z pointing superior:
+///  - **aorta** along the z axis from z = top down to the bifurcation at z = 0. Radius r(z):
+///    the neck radius above the sac; in the sac (length L, top at `sacTopZ`) a linear blend from
+///    the neck radius to the distal-neck radius plus a sin² bump that reaches `maxAneurysmDiameterMm`
+///    at mid-sac; the distal-neck radius from the sac to the bifurcation.
+///  - **renal arteries** (radius 3 mm): the right one at the lower level (it is the lowest renal;
+///    the lower edge of its ostium is the proximal implantation site), the left 6 mm higher;
+///    they run laterally to the kidneys' hila. The patient's right is −x in LPS.
+///  - **superior mesenteric** and **coeliac** arteries leave anteriorly (−y) above the renals.
+///  - **common iliacs** leave the bifurcation 25° from the midline, 55 mm long, then split into
+///    **external** (continuing caudally) and **internal** iliacs (posterior and lateral).
+///  - optional **vertebral column** behind the aorta (cortical shell 2 mm at 900 HU around
+///    cancellous bone at 250 HU), placed `boneGapMm` from the sac at its widest.
+///  - optional **kidneys**, ellipsoids of `kidneyHu` at the ends of the renal arteries.
+///
+/// A vessel is the set of points whose distance d to its axis polyline is below r(s) at the
+/// closest axis point s, so every cross-section perpendicular to a straight piece of axis is a
+/// disc of exactly r(s). The image is tissueHu plus, per structure, its contrast times
+/// Φ(−sd/blurSigmaMm) (sd: signed distance to its surface; Φ: normal CDF), i.e. the analytic
+/// blur of a locally flat edge by a Gaussian point-spread function, taking the brightest structure
+/// where they meet; then white Gaussian noise from std::mt19937(noiseSeed). The truth labels are
+/// the signs of sd at the voxel centres.
+///
+/// Grid: any spacing and orthonormal direction (flips allowed); the extent holds the anatomy with
+/// a 10 mm margin unless `sizeVoxels` is given (then centred on the anatomy).
+///
+/// Errors: InputError for a parameter out of range or a non-orthonormal direction, naming it.
+/// Complexity: linear in the voxels of each structure's bounding box, plus the whole grid for
+/// noise.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "Types.h"
+
+namespace sgp
+{
+
+/// Parameters; defaults equal the XML defaults of SyntheticAorticPhantom (a test compares them).
+struct PhantomParams
+{
+  std::array<double, 3> spacingMm{ 0.8, 0.8, 1.0 };
+  /// Columns are the unit directions of the i, j, k axes in LPS.
+  Eigen::Matrix3d directionLps = Eigen::Matrix3d::Identity();
+  std::array<int, 3> sizeVoxels{ 0, 0, 0 }; ///< 0,0,0 = fit the anatomy
+
+  double neckDiameterMm = 22.0;
+  double neckLengthMm = 25.0;
+  double maxAneurysmDiameterMm = 55.0;
+  double aneurysmLengthMm = 80.0;
+  double distalNeckDiameterMm = 18.0;
+  double rightIliacDiameterMm = 12.0;
+  double leftIliacDiameterMm = 12.0;
+
+  double lumenHu = 350.0;
+  double tissueHu = 40.0;
+  double blurSigmaMm = 1.0;
+  double noiseSigmaHu = 20.0;
+  int noiseSeed = 0;
+  bool includeBone = false;
+  double boneGapMm = 2.0;
+  bool includeKidneys = false;
+  double kidneyHu = 180.0;
+};
+
+/// Labels of the truth image.
+enum PhantomLabel : unsigned char
+{
+  TissueLabel = 0,
+  LumenLabel = 1,
+  BoneLabel = 2,
+  KidneyLabel = 3
+};
+
+/// One vessel's analytic centerline, sampled every 1 mm from its start (points LPS mm, n×3) with
+/// the lumen radius there (mm).
+struct PhantomVessel
+{
+  std::string name;
+  Points axis;
+  Eigen::VectorXd radiusMm;
+};
+
+struct PhantomLandmark
+{
+  std::string name;
+  Point3 lps;
+};
+
+/// The sizing truth, after Egger et al. (2007) section 2.2 and the lengths the IFUs check (mm).
+struct PhantomSizing
+{
+  double proximalNeckDiameter = 0.0;   ///< (a) at the lower edge of the lowest renal ostium
+  double neckDiameter15mm = 0.0;       ///< (b) 15 mm inferior to (a) along the aorta
+  double maxAneurysmDiameter = 0.0;    ///< (c)
+  double distalNeckMinDiameter = 0.0;  ///< (d) between the sac and the bifurcation
+  double rightIliacDiameter = 0.0;     ///< (e) common iliac
+  double leftIliacDiameter = 0.0;      ///< (f)
+  double proximalNeckLength = 0.0;     ///< lowest renal lower edge to the sac's top
+  double proximalSiteToBifurcationLength = 0.0;
+  double rightIliacLength = 0.0;       ///< aortic bifurcation to the right internal iliac origin
+  double leftIliacLength = 0.0;
+};
+
+struct PhantomTruth
+{
+  std::vector<PhantomVessel> vessels;   ///< aorta first, then iliacs and side branches
+  std::vector<PhantomLandmark> landmarks;
+  PhantomSizing sizing;
+  Point3 seedLps = Point3::Zero();      ///< in the aneurysm lumen, 0.5 mm off the axis
+  double lumenVolumeMl = 0.0;           ///< lumen voxels × voxel volume
+};
+
+struct AorticPhantom
+{
+  CtImage::Pointer ct;        ///< HU
+  LabelImage::Pointer labels; ///< PhantomLabel per voxel, same grid
+  PhantomTruth truth;
+};
+
+/// Checks every range of `params`; \throws InputError naming the parameter and its value.
+void ValidatePhantomParams(const PhantomParams& params);
+
+/// Builds the phantom; see the file comment.
+AorticPhantom GenerateAorticPhantom(const PhantomParams& params, const ProgressCallback& progress = {});
+
+} // namespace sgp

@@ -1,0 +1,206 @@
+#!/usr/bin/python3
+"""StentGraftSimulation rejects bad input cleanly: one ERROR line, no output left.
+
+Usage: test_bad_input.py --phantom PHANTOM_EXE --cli SGS_EXE --workdir DIR
+
+Slicer reads nothing but the exit code and shows stderr to the user
+(slicer-conventions.md 2.2; STYLE.md B5). So for each bad input this proves
+that the CLI
+- exits with a non-zero code (and does not crash),
+- prints exactly one stderr line, starting with "ERROR: ",
+- names the offending value in it,
+- leaves its output folder empty: no partial label map, no temporary file,
+  no return-parameter file.
+The cases: missing input file, unreadable file, a 2-D image, a seed outside
+the image, a seed in soft tissue, an inverted manual HU window, no seed, a
+non-numeric seed. A positive control through the same harness (valid input
+exits 0 and leaves lumen.nrrd and ret.params) shows the harness can tell
+success from failure. Prints one line per check and `N passed, M failed`;
+exits 1 on any failure.
+"""
+
+import argparse
+import os
+import random
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import sem_rules  # noqa: E402
+
+TIMEOUT_S = 600  # small phantom; generous for the 2-core test machine
+results = []
+
+
+def check(ok, what, detail=""):
+    results.append(bool(ok))
+    print(f"{'PASS' if ok else 'FAIL'}: {what}" + (f" -- {detail}" if detail and not ok else ""))
+    return ok
+
+
+def run(argv, cwd):
+    try:
+        result = subprocess.run(argv, capture_output=True, timeout=TIMEOUT_S, cwd=cwd,
+                                env=dict(os.environ, ITK_AUTOLOAD_PATH=""))
+    except subprocess.TimeoutExpired as expired:
+        result = subprocess.CompletedProcess(argv, None, expired.stdout or b"", expired.stderr or b"")
+    result.stdout = result.stdout.decode("utf-8", errors="replace")
+    result.stderr = result.stderr.decode("utf-8", errors="replace")
+    return result
+
+
+def make_small_phantom(exe, workdir):
+    """A small valid phantom; returns (volume path, seed RAS, truth label path)."""
+    paths = {name: os.path.join(workdir, name)
+             for name in ("small.nrrd", "small-truth.json", "small-label.nrrd", "small.params")}
+    argv = [exe, "--returnparameterfile", paths["small.params"], "--spacingMm", "1.5,1.5,2",
+            "--outputTruth", paths["small-truth.json"],
+            "--outputTruthLabelMap", paths["small-label.nrrd"], paths["small.nrrd"]]
+    print(f"RUN: {' '.join(argv)}")
+    result = run(argv, workdir)
+    check(result.returncode == 0, "small phantom is generated (exit 0)",
+          f"exit code {result.returncode}; stderr: {result.stderr.strip()[:500]}")
+    seed = None
+    if os.path.isfile(paths["small.params"]):
+        try:
+            seed = [float(v) for v in
+                    sem_rules.read_return_parameters(paths["small.params"])["seedRas"].split(",")]
+        except (KeyError, ValueError):
+            seed = None
+    check(seed is not None and len(seed) == 3, "small phantom returns seedRas as x,y,z")
+    return paths["small.nrrd"], seed, paths["small-label.nrrd"]
+
+
+def tissue_seed(seed_ras, label_path):
+    """A RAS point in soft tissue (truth label 0) near the lumen seed.
+
+    Tries 80 mm anterior of the seed first, then other offsets, and uses the
+    first one inside the image whose truth label is 0.
+    """
+    offsets = [(0, 80, 0), (0, 60, 0), (0, 40, 0), (60, 0, 0), (-60, 0, 0)]
+    try:
+        labels, header = sem_rules.read_nrrd(label_path)
+        axes = np.array(header["directions"], dtype=float).T  # columns: i, j, k steps in LPS mm
+        origin = np.array(header["origin"], dtype=float)
+    except (OSError, ValueError, KeyError, TypeError) as error:
+        print(f"NOTE: cannot read the truth label map ({error}); using 80 mm anterior unchecked")
+        return [seed_ras[0], seed_ras[1] + 80, seed_ras[2]]
+    for offset in offsets:
+        ras = np.add(seed_ras, offset)
+        lps = np.array([-ras[0], -ras[1], ras[2]])
+        ijk = np.rint(np.linalg.solve(axes, lps - origin)).astype(int)
+        inside = all(0 <= ijk[a] < header["sizes"][a] for a in range(3))
+        if inside and labels[ijk[2], ijk[1], ijk[0]] == 0:
+            print(f"NOTE: soft-tissue seed RAS {ras.tolist()} (seed + {offset} mm), truth label 0")
+            return ras.tolist()
+    print("NOTE: no candidate soft-tissue point had truth label 0; using 80 mm anterior")
+    return [seed_ras[0], seed_ras[1] + 80, seed_ras[2]]
+
+
+def fresh_dir(path):
+    if os.path.exists(path):
+        shutil.rmtree(path)
+    os.makedirs(path)
+    return path
+
+
+def seed_text(ras):
+    return ",".join("%g" % v for v in ras)
+
+
+def run_cli(cli, outdir, input_path, extra):
+    """The CLI with Slicer's argument order: return file, flags, outputs, positional input."""
+    argv = [cli, "--returnparameterfile", os.path.join(outdir, "ret.params"), *extra,
+            "--outputLabelMap", os.path.join(outdir, "lumen.nrrd"), input_path]
+    print(f"RUN: {' '.join(argv)}")
+    return run(argv, outdir)
+
+
+def bad_case(cli, workdir, label, input_path, extra, needles, ignore_case=False):
+    outdir = fresh_dir(os.path.join(workdir, "case-" + label))
+    result = run_cli(cli, outdir, input_path, extra)
+    stderr = result.stderr.strip()
+    check(result.returncode is not None and result.returncode > 0,
+          f"{label}: exits with a non-zero code (not a crash or a hang)",
+          f"exit code {result.returncode}")
+    lines = stderr.splitlines()
+    check(len(lines) == 1 and lines[0].startswith("ERROR: "),
+          f"{label}: stderr is exactly one line starting with 'ERROR: '", repr(stderr[:600]))
+    print(f"NOTE: {label}: stderr: {stderr[:300]}")
+    haystack = stderr.lower() if ignore_case else stderr
+    for needle in needles:
+        wanted = needle.lower() if ignore_case else needle
+        check(wanted in haystack, f"{label}: the message names {needle!r}")
+    left = sorted(os.listdir(outdir))
+    check(not left, f"{label}: leaves the output folder empty", str(left))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--phantom", required=True, help="SyntheticAorticPhantom executable")
+    parser.add_argument("--cli", required=True, help="StentGraftSimulation executable")
+    parser.add_argument("--workdir", required=True, help="scratch directory")
+    args = parser.parse_args()
+    workdir = os.path.abspath(args.workdir)
+    os.makedirs(workdir, exist_ok=True)
+    cli = os.path.abspath(args.cli)
+
+    volume, seed, label_path = make_small_phantom(os.path.abspath(args.phantom), workdir)
+    if seed is None:
+        seed = [0.0, 0.0, 0.0]
+        print("NOTE: no phantom seed; cases needing a valid seed use 0,0,0")
+    valid_seed = ["--seed", seed_text(seed)]
+
+    # Positive control: the same harness must see success as success.
+    outdir = fresh_dir(os.path.join(workdir, "case-positive-control"))
+    result = run_cli(cli, outdir, volume, valid_seed)
+    check(result.returncode == 0, "positive control: valid input exits 0",
+          f"exit code {result.returncode}; stderr: {result.stderr.strip()[:500]}")
+    left = sorted(os.listdir(outdir))
+    check("lumen.nrrd" in left and "ret.params" in left,
+          "positive control: leaves lumen.nrrd and ret.params", str(left))
+    check(set(left) <= {"lumen.nrrd", "ret.params"},
+          "positive control: leaves no other (temporary) file", str(left))
+
+    missing = os.path.join(workdir, "does-not-exist.nrrd")
+    if os.path.exists(missing):
+        os.remove(missing)
+    bad_case(cli, workdir, "missing-file", missing, valid_seed, [missing])
+
+    garbage = os.path.join(workdir, "garbage.nrrd")
+    with open(garbage, "wb") as handle:
+        handle.write(bytes(random.Random(0).getrandbits(8) for _ in range(4096)))
+    bad_case(cli, workdir, "unreadable-file", garbage, valid_seed, [garbage])
+
+    flat = os.path.join(workdir, "flat-2d.nrrd")
+    with open(flat, "wb") as handle:
+        handle.write(b"NRRD0004\ntype: short\ndimension: 2\nsizes: 32 32\nspacings: 1 1\n"
+                     b"encoding: raw\nendian: little\n\n")
+        handle.write(np.full((32, 32), 300, dtype="<i2").tobytes())  # lumen-like HU
+    bad_case(cli, workdir, "2d-image", flat, ["--seed", "16,16,0"], ["2-D"])
+
+    bad_case(cli, workdir, "seed-outside", volume, ["--seed", "5000,5000,5000"], ["5000"])
+
+    soft = tissue_seed(seed, label_path)
+    bad_case(cli, workdir, "seed-in-tissue", volume, ["--seed", seed_text(soft)], ["HU"])
+
+    bad_case(cli, workdir, "inverted-window", volume,
+             valid_seed + ["--thresholdMode", "manual", "--lowerHu", "600", "--upperHu", "200"],
+             ["600", "200"])
+
+    # Case-insensitive: the sentence may begin with "Seed".
+    bad_case(cli, workdir, "no-seed", volume, [], ["seed"], ignore_case=True)
+
+    bad_case(cli, workdir, "seed-not-numeric", volume, ["--seed", "a,b,c"], ["a,b,c"])
+
+    passed = sum(results)
+    failed = len(results) - passed
+    print(f"{passed} passed, {failed} failed")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
