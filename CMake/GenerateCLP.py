@@ -158,11 +158,12 @@ def generate(raw, root, params):
     w("  }")
     w("")
     w("#define GENERATE_DECLARE \\")
+    # [[maybe_unused]]: a module need not read every parameter (returns, --echo, tests).
     for p in params:
-        w("  %s \\" % p.declaration())
-    w("  bool echoSwitch = false; \\")
-    w("  std::string returnParameterFile; \\")
-    w("  std::string processInformationAddressString = \"0\"; \\")
+        w("  [[maybe_unused]] %s \\" % p.declaration())
+    w("  [[maybe_unused]] bool echoSwitch = false; \\")
+    w("  [[maybe_unused]] std::string returnParameterFile; \\")
+    w("  [[maybe_unused]] std::string processInformationAddressString = \"0\"; \\")
     w("  static_assert(true, \"\")")
     w("")
     w("#define GENERATE_TCLAP \\")

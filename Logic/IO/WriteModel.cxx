@@ -37,7 +37,7 @@ void WriteModelLps(vtkPolyData* polyData, const std::string& path)
     writer->SetFileName(path.c_str());
     writer->SetDataModeToAppended();
     writer->SetCompressorTypeToZLib();
-    written = writer->Write();
+    written = writer->Write() == 1 && writer->GetErrorCode() == 0 ? 1 : 0;
   }
   else if (EndsWith(path, ".vtk"))
   {
@@ -47,7 +47,7 @@ void WriteModelLps(vtkPolyData* polyData, const std::string& path)
     writer->SetHeader("3D Slicer output. SPACE=LPS");
     writer->SetFileVersion(vtkPolyDataWriter::VTK_LEGACY_READER_VERSION_4_2);
     writer->SetFileTypeToBinary();
-    written = writer->Write();
+    written = writer->Write() == 1 && writer->GetErrorCode() == 0 ? 1 : 0;
   }
   else
   {

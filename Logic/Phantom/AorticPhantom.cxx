@@ -24,7 +24,7 @@ constexpr double commonIliacLengthMm = 55.0;
 constexpr double commonIliacAngleDeg = 25.0;
 constexpr double vertebraRadiusMm = 20.0;
 constexpr double corticalThicknessMm = 2.0;
-constexpr double corticalHu = 900.0;
+constexpr double corticalHu = 1100.0; // blurred by 1 mm, the 2 mm shell peaks near 800 HU
 constexpr double cancellousHu = 250.0;
 constexpr double marginMm = 10.0;
 

@@ -13,7 +13,7 @@
 ///  - **superior mesenteric** and **coeliac** arteries leave anteriorly (−y) above the renals.
 ///  - **common iliacs** leave the bifurcation 25° from the midline, 55 mm long, then split into
 ///    **external** (continuing caudally) and **internal** iliacs (posterior and lateral).
-///  - optional **vertebral column** behind the aorta (cortical shell 2 mm at 900 HU around
+///  - optional **vertebral column** behind the aorta (cortical shell 2 mm at 1100 HU around
 ///    cancellous bone at 250 HU), placed `boneGapMm` from the sac at its widest.
 ///  - optional **kidneys**, ellipsoids of `kidneyHu` at the ends of the renal arteries.
 ///

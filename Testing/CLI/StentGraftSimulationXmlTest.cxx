@@ -1,0 +1,49 @@
+// The XML is the single source of truth (STYLE.md B4): the defaults GenerateCLP declares from it
+// must equal the defaults of the Logic's parameter structs, and the strict point parsing holds.
+#include <gtest/gtest.h>
+
+#include "StentGraftSimulationCLP.h"
+#include "StentGraftSimulationParameters.h"
+
+namespace sgp
+{
+namespace
+{
+
+TEST(StentGraftSimulationXml, Defaults_EqualRegionGrowingParams)
+{
+  GENERATE_DECLARE;
+  const RegionGrowingParams fromXml = MakeRegionGrowingParams(
+    thresholdMode, lowerHu, upperHu, windowSigmas, seedMinimumHu, leakOpeningRadiusMm, maximumLumenVolumeMl);
+  const RegionGrowingParams defaults;
+  EXPECT_EQ(fromXml.thresholdMode, defaults.thresholdMode);
+  EXPECT_EQ(fromXml.lowerHu, defaults.lowerHu);
+  EXPECT_EQ(fromXml.upperHu, defaults.upperHu);
+  EXPECT_EQ(fromXml.windowSigmas, defaults.windowSigmas);
+  EXPECT_EQ(fromXml.seedMinimumHu, defaults.seedMinimumHu);
+  EXPECT_EQ(fromXml.leakOpeningRadiusMm, defaults.leakOpeningRadiusMm);
+  EXPECT_EQ(fromXml.maximumLumenVolumeMl, defaults.maximumLumenVolumeMl);
+  EXPECT_TRUE(seed.empty()); // required: no default point
+  EXPECT_EQ(std::string(XMLModuleDescription).rfind("<?xml ", 0), 0u);
+}
+
+TEST(StentGraftSimulationXml, SplitNumbers_StrictComponents)
+{
+  EXPECT_EQ(clp::SplitNumbers<float>("12.5,-3.25,40", "seed", 3), (std::vector<float>{ 12.5f, -3.25f, 40.0f }));
+  EXPECT_THROW(clp::SplitNumbers<float>("a,b,c", "seed", 3), clp::ParseError);
+  EXPECT_THROW(clp::SplitNumbers<float>("1,2", "seed", 3), clp::ParseError);
+  EXPECT_THROW(clp::SplitNumbers<float>("1,,3", "seed", 3), clp::ParseError);
+  EXPECT_THROW(clp::SplitNumbers<int>("1,2.5,3", "sizeVoxels", 3), clp::ParseError);
+  try
+  {
+    clp::SplitNumbers<float>("a,b,c", "seed", 3);
+  }
+  catch (const clp::ParseError& e)
+  {
+    EXPECT_STREQ(e.what(), "--seed got 'a,b,c': 'a' is not a number; expected comma-separated numbers, for "
+                           "example 1.5,-20,33");
+  }
+}
+
+} // namespace
+} // namespace sgp

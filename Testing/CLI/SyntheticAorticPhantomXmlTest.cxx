@@ -1,0 +1,42 @@
+// The phantom CLI's XML defaults must equal PhantomParams' defaults (STYLE.md B4).
+#include <gtest/gtest.h>
+
+#include "SyntheticAorticPhantomCLP.h"
+#include "SyntheticAorticPhantomParameters.h"
+
+namespace sgp
+{
+namespace
+{
+
+TEST(SyntheticAorticPhantomXml, Defaults_EqualPhantomParams)
+{
+  GENERATE_DECLARE;
+  const PhantomParams fromXml = MakePhantomParams(spacingMm, directionLps, sizeVoxels);
+  const PhantomParams d;
+  for (int a = 0; a < 3; ++a)
+  {
+    EXPECT_EQ(fromXml.spacingMm[a], d.spacingMm[a]);
+    EXPECT_EQ(fromXml.sizeVoxels[a], d.sizeVoxels[a]);
+  }
+  EXPECT_EQ(fromXml.directionLps, d.directionLps);
+  EXPECT_EQ(neckDiameterMm, d.neckDiameterMm);
+  EXPECT_EQ(neckLengthMm, d.neckLengthMm);
+  EXPECT_EQ(maxAneurysmDiameterMm, d.maxAneurysmDiameterMm);
+  EXPECT_EQ(aneurysmLengthMm, d.aneurysmLengthMm);
+  EXPECT_EQ(distalNeckDiameterMm, d.distalNeckDiameterMm);
+  EXPECT_EQ(rightIliacDiameterMm, d.rightIliacDiameterMm);
+  EXPECT_EQ(leftIliacDiameterMm, d.leftIliacDiameterMm);
+  EXPECT_EQ(lumenHu, d.lumenHu);
+  EXPECT_EQ(tissueHu, d.tissueHu);
+  EXPECT_EQ(blurSigmaMm, d.blurSigmaMm);
+  EXPECT_EQ(noiseSigmaHu, d.noiseSigmaHu);
+  EXPECT_EQ(noiseSeed, d.noiseSeed);
+  EXPECT_EQ(includeBone, d.includeBone);
+  EXPECT_EQ(boneGapMm, d.boneGapMm);
+  EXPECT_EQ(includeKidneys, d.includeKidneys);
+  EXPECT_EQ(kidneyHu, d.kidneyHu);
+}
+
+} // namespace
+} // namespace sgp

@@ -1,0 +1,54 @@
+/// \file PhantomTestSupport.h
+/// Comparisons of segmentations against the phantom's truth labels, shared by the tests and
+/// benchmarks. Both images must be on the same grid (checked).
+#pragma once
+
+#include <array>
+#include <stdexcept>
+
+#include "Phantom/AorticPhantom.h"
+
+namespace sgp::testing
+{
+
+/// Voxel counts of a binary segmentation against the truth labels.
+struct Overlap
+{
+  long truthLumen = 0;                ///< voxels labelled lumen in the truth
+  long segmented = 0;                 ///< voxels set in the segmentation
+  long both = 0;                      ///< set in both
+  std::array<long, 4> perLabel{};     ///< segmented voxels per truth label
+  std::array<long, 4> labelCount{};   ///< truth voxels per label
+
+  double Dice() const { return 2.0 * double(both) / double(truthLumen + segmented); }
+  /// Fraction of the truth voxels of `label` that were segmented.
+  double FractionOf(PhantomLabel label) const
+  {
+    return labelCount[label] ? double(perLabel[label]) / double(labelCount[label]) : 0.0;
+  }
+};
+
+inline Overlap CompareWithTruth(const LabelImage& segmentation, const LabelImage& truth)
+{
+  if (segmentation.GetLargestPossibleRegion() != truth.GetLargestPossibleRegion())
+  {
+    throw std::invalid_argument("CompareWithTruth: the images are on different grids");
+  }
+  Overlap overlap;
+  const long count = static_cast<long>(truth.GetLargestPossibleRegion().GetNumberOfPixels());
+  const unsigned char* s = segmentation.GetBufferPointer();
+  const unsigned char* t = truth.GetBufferPointer();
+  for (long i = 0; i < count; ++i)
+  {
+    const bool set = s[i] != 0;
+    const unsigned label = t[i] < 4 ? t[i] : 0;
+    overlap.truthLumen += label == LumenLabel;
+    overlap.segmented += set;
+    overlap.both += set && label == LumenLabel;
+    overlap.perLabel[label] += set;
+    overlap.labelCount[label] += 1;
+  }
+  return overlap;
+}
+
+} // namespace sgp::testing

@@ -1,0 +1,224 @@
+// Tests of the synthetic phantom: its labels and intensities agree with its analytic geometry
+// on any grid, and its truth is what the sizing definitions say.
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include "Errors.h"
+#include "ImageGeometry.h"
+#include "Phantom/AorticPhantom.h"
+
+namespace sgp
+{
+namespace
+{
+
+unsigned char LabelAt(const AorticPhantom& phantom, const Point3& lps)
+{
+  return phantom.labels->GetPixel(LpsToIndexInside(*phantom.labels, lps, "point"));
+}
+
+const PhantomVessel& Vessel(const AorticPhantom& phantom, const std::string& name)
+{
+  for (const PhantomVessel& v : phantom.truth.vessels)
+    if (v.name == name)
+      return v;
+  throw std::runtime_error("no vessel " + name);
+}
+
+/// The voxel nearest a point can lie half a voxel diagonal away (0.64 mm on 0.8 × 0.8 × 1.0 mm),
+/// so points are tested 1 mm inside and outside the analytic surface.
+constexpr double probeMm = 1.0;
+
+TEST(AorticPhantom, SacCrossSection_LabelsFollowAnalyticRadius)
+{
+  const AorticPhantom phantom = GenerateAorticPhantom(PhantomParams{});
+  const PhantomVessel& aorta = Vessel(phantom, "aorta");
+  for (Eigen::Index i = 0; i < aorta.axis.rows(); i += 7)
+  {
+    const Point3 c = aorta.axis.row(i).transpose();
+    const double r = aorta.radiusMm[i];
+    for (const Point3& dir : { Point3(1, 0, 0), Point3(0, -1, 0), Point3(0.6, 0.8, 0) })
+    {
+      if (c.z() < 2.0) // the bifurcation: the iliacs join here
+        continue;
+      EXPECT_EQ(LabelAt(phantom, c + (r - probeMm) * dir), LumenLabel) << "z " << c.z();
+      const Point3 outside = c + (r + probeMm) * dir;
+      if (c.z() < 115.0) // above, the renal (125–137 mm), mesenteric and coeliac ostia open the wall
+      {
+        EXPECT_EQ(LabelAt(phantom, outside), TissueLabel) << "z " << c.z();
+      }
+    }
+  }
+}
+
+TEST(AorticPhantom, SizingTruth_FromTheRadiusProfile)
+{
+  PhantomParams p;
+  p.neckLengthMm = 9.0; // (b) then lies 6 mm into the sac
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  const PhantomSizing& s = phantom.truth.sizing;
+  EXPECT_DOUBLE_EQ(s.proximalNeckDiameter, 22.0);
+  EXPECT_GT(s.neckDiameter15mm, 22.0);
+  // The sac's blend from 11 to 9 mm radius moves the maximum 0.5 mm off mid-sac: +0.01 mm.
+  EXPECT_NEAR(s.maxAneurysmDiameter, 55.0, 0.02);
+  EXPECT_DOUBLE_EQ(s.distalNeckMinDiameter, 18.0);
+  EXPECT_DOUBLE_EQ(s.proximalNeckLength, 9.0);
+  EXPECT_DOUBLE_EQ(s.proximalSiteToBifurcationLength, 20.0 + 80.0 + 9.0);
+  const PhantomVessel& aorta = Vessel(phantom, "aorta");
+  EXPECT_NEAR(2 * aorta.radiusMm.maxCoeff(), s.maxAneurysmDiameter, 0.02); // 1 mm samples near the top
+}
+
+TEST(AorticPhantom, ObliqueFlippedGrid_RightIliacStaysOnPatientRight)
+{
+  PhantomParams p;
+  p.spacingMm = { 0.9, 0.9, 1.5 };
+  p.rightIliacDiameterMm = 16.0;
+  p.leftIliacDiameterMm = 8.0;
+  p.directionLps = (Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix() *
+                    Eigen::Vector3d(-1, 1, -1).asDiagonal());
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  const PhantomVessel& right = Vessel(phantom, "rightIliac");
+  const PhantomVessel& left = Vessel(phantom, "leftIliac");
+  const Point3 rightMid = right.axis.row(right.axis.rows() / 2).transpose();
+  const Point3 leftMid = left.axis.row(left.axis.rows() / 2).transpose();
+  EXPECT_LT(rightMid.x(), -10.0); // patient right is −x in LPS
+  EXPECT_GT(leftMid.x(), 10.0);
+  const Point3 forward(0, -1, 0); // perpendicular to both iliacs (they lie in the coronal plane)
+  EXPECT_EQ(LabelAt(phantom, rightMid + (8.0 - probeMm) * forward), LumenLabel);
+  EXPECT_EQ(LabelAt(phantom, leftMid + (8.0 - probeMm) * forward), TissueLabel);
+  EXPECT_EQ(LabelAt(phantom, leftMid + (4.0 - probeMm) * forward), LumenLabel);
+}
+
+TEST(AorticPhantom, Intensities_LumenTissueBoneKidney)
+{
+  PhantomParams p;
+  p.includeBone = true;
+  p.includeKidneys = true;
+  p.noiseSigmaHu = 0.0;
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  const auto hu = [&](const Point3& x) { return phantom.ct->GetPixel(LpsToIndexInside(*phantom.ct, x, "point")); };
+  const double rMax = phantom.truth.sizing.maxAneurysmDiameter / 2;
+  // Deep inside each structure the blur (σ 1 mm) leaves the nominal value to within 1 HU.
+  EXPECT_NEAR(hu(phantom.truth.seedLps), 350, 1);
+  EXPECT_NEAR(hu(Point3(0, -rMax - 15, 60)), 40, 1);
+  const double columnCentre = rMax + 2.0 + 20.0;
+  EXPECT_NEAR(hu(Point3(0, columnCentre, 60)), 250, 1);
+  EXPECT_EQ(LabelAt(phantom, Point3(0, columnCentre, 60)), BoneLabel);
+  EXPECT_EQ(LabelAt(phantom, Point3(0, rMax + 1.0, 60)), TissueLabel); // inside the 2 mm gap
+  // The cortex (2 mm) against its analytic blur at the centre of the voxel nearest mid-cortex:
+  // 40 + 1060·Φ(−d/σ) − 850·Φ(−(d + 2)/σ), d the signed distance to the column's surface.
+  const auto index = LpsToIndexInside(*phantom.ct, Point3(0, rMax + 2.0 + 1.0, 60), "cortex");
+  const Point3 centre = IndexToLps(*phantom.ct, index);
+  const double d = std::hypot(centre.x(), centre.y() - columnCentre) - 20.0;
+  const auto phi = [](double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); };
+  EXPECT_NEAR(phantom.ct->GetPixel(index), 40 + 1060 * phi(-d) - 850 * phi(-(d + 2.0)), 0.5 + 1e-9); // rounding
+  EXPECT_GT(phantom.ct->GetPixel(index), 700); // cortical bone as CT shows it
+  EXPECT_EQ(LabelAt(phantom, Point3(-80, 15, 120)), KidneyLabel);
+  EXPECT_NEAR(hu(Point3(-80, 15, 120)), 180, 1);
+}
+
+TEST(AorticPhantom, NoiseSeed_DeterminesTheVolume)
+{
+  PhantomParams p;
+  p.spacingMm = { 2.0, 2.0, 2.0 };
+  const AorticPhantom a = GenerateAorticPhantom(p), b = GenerateAorticPhantom(p);
+  p.noiseSeed = 1;
+  const AorticPhantom c = GenerateAorticPhantom(p);
+  const long n = static_cast<long>(a.ct->GetLargestPossibleRegion().GetNumberOfPixels());
+  long sameAB = 0, sameAC = 0;
+  for (long i = 0; i < n; ++i)
+  {
+    sameAB += a.ct->GetBufferPointer()[i] == b.ct->GetBufferPointer()[i];
+    sameAC += a.ct->GetBufferPointer()[i] == c.ct->GetBufferPointer()[i];
+  }
+  EXPECT_EQ(sameAB, n);
+  EXPECT_LT(sameAC, n / 10); // σ 20 HU: two draws round to the same HU about 1.4 % of the time
+}
+
+TEST(AorticPhantom, SizeGiven_GridCentredOnAnatomy)
+{
+  PhantomParams p;
+  p.sizeVoxels = { 300, 200, 250 };
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  const auto size = phantom.ct->GetLargestPossibleRegion().GetSize();
+  EXPECT_EQ(size[0], 300u);
+  EXPECT_EQ(size[2], 250u);
+  EXPECT_EQ(LabelAt(phantom, phantom.truth.seedLps), LumenLabel);
+}
+
+TEST(AorticPhantom, ParameterOutOfRange_InputErrorNamesIt)
+{
+  const std::vector<std::pair<std::string, std::function<void(PhantomParams&)>>> cases{
+    { "spacingMm (k) is 0.10 mm", [](auto& p) { p.spacingMm[2] = 0.1; } },
+    { "sizeVoxels (j) is 8.00 voxels", [](auto& p) { p.sizeVoxels = { 100, 8, 100 }; } },
+    { "sizeVoxels must be 0,0,0", [](auto& p) { p.sizeVoxels = { 100, 0, 0 }; } },
+    { "directionLps is not orthonormal", [](auto& p) { p.directionLps(0, 1) = 0.5; } },
+    { "neckDiameterMm is 5.00 mm", [](auto& p) { p.neckDiameterMm = 5; } },
+    { "neckLengthMm is 1.00 mm", [](auto& p) { p.neckLengthMm = 1; } },
+    { "maxAneurysmDiameterMm is 20.00 mm; expected 22.0", [](auto& p) { p.maxAneurysmDiameterMm = 20; } },
+    { "aneurysmLengthMm is 300.00 mm", [](auto& p) { p.aneurysmLengthMm = 300; } },
+    { "distalNeckDiameterMm is 50.00 mm", [](auto& p) { p.distalNeckDiameterMm = 50; } },
+    { "rightIliacDiameterMm is 2.00 mm", [](auto& p) { p.rightIliacDiameterMm = 2; } },
+    { "leftIliacDiameterMm is 40.00 mm", [](auto& p) { p.leftIliacDiameterMm = 40; } },
+    { "lumenHu is 50.00 HU", [](auto& p) { p.lumenHu = 50; } },
+    { "tissueHu is 300.00 HU", [](auto& p) { p.tissueHu = 300; } },
+    { "blurSigmaMm is 4.00 mm", [](auto& p) { p.blurSigmaMm = 4; } },
+    { "noiseSigmaHu is -1.00 HU", [](auto& p) { p.noiseSigmaHu = -1; } },
+    { "noiseSeed is -3.00", [](auto& p) { p.noiseSeed = -3; } },
+    { "boneGapMm is 0.00 mm", [](auto& p) { p.boneGapMm = 0; } },
+    { "kidneyHu is 500.00 HU", [](auto& p) { p.kidneyHu = 500; } },
+  };
+  for (const auto& [expected, plant] : cases)
+  {
+    PhantomParams p;
+    plant(p);
+    try
+    {
+      GenerateAorticPhantom(p);
+      ADD_FAILURE() << "no error for " << expected;
+    }
+    catch (const InputError& e)
+    {
+      EXPECT_EQ(std::string(e.what()).rfind(expected, 0), 0u) << e.what();
+    }
+  }
+}
+
+TEST(ImageGeometry, FlippedDirection_PointMapsToItsVoxel)
+{
+  auto image = LabelImage::New();
+  LabelImage::RegionType region;
+  region.SetSize({ { 10, 20, 30 } });
+  image->SetRegions(region);
+  LabelImage::DirectionType d;
+  d.Fill(0);
+  d(0, 0) = -1; // i grows toward patient right
+  d(1, 1) = -1;
+  d(2, 2) = 1;
+  image->SetDirection(d);
+  const double spacing[3] = { 1.0, 2.0, 3.0 };
+  image->SetSpacing(spacing);
+  const double origin[3] = { 5.0, 10.0, -20.0 };
+  image->SetOrigin(origin);
+  const auto index = LpsToIndexInside(*image, Point3(5.0 - 3.0, 10.0 - 4.0, -20.0 + 9.0), "P");
+  EXPECT_EQ(index[0], 3);
+  EXPECT_EQ(index[1], 2);
+  EXPECT_EQ(index[2], 3);
+  EXPECT_TRUE(IndexToLps(*image, index).isApprox(Point3(2.0, 6.0, -11.0)));
+  const auto b = ImageBoundsLps(*image);
+  EXPECT_DOUBLE_EQ(b[0], 5.0 - 9.5);
+  EXPECT_DOUBLE_EQ(b[1], 5.5);
+  try
+  {
+    LpsToIndexInside(*image, Point3(6.0, 0.0, 0.0), "Seed");
+    ADD_FAILURE();
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_STREQ(e.what(), "Seed (6.0, 0.0, 0.0) mm LPS lies outside the image (x -4.5 to 5.5, y -29.0 to 11.0, "
+                           "z -21.5 to 68.5 mm LPS); place it inside this volume.");
+  }
+}
+
+} // namespace
+} // namespace sgp

@@ -1,0 +1,283 @@
+// Tests of GrowLumenRegion against the analytic truth of the synthetic phantom (STYLE.md B6).
+#include <cmath>
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include "Errors.h"
+#include "GrowLumenRegion.h"
+#include "Phantom/AorticPhantom.h"
+#include "PhantomTestSupport.h"
+
+namespace sgp
+{
+namespace
+{
+
+using testing::CompareWithTruth;
+
+/// The Dice bar of the foundation issue: boundary voxels of a lumen a few voxels across.
+constexpr double minimumDice = 0.95;
+
+Eigen::Matrix3d ObliqueFlippedDirection()
+{
+  const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(30.0 * M_PI / 180.0, Eigen::Vector3d::UnitZ()) *
+                                    Eigen::AngleAxisd(20.0 * M_PI / 180.0, Eigen::Vector3d::UnitX()))
+                                     .toRotationMatrix();
+  return rotation * Eigen::Vector3d(1.0, -1.0, 1.0).asDiagonal(); // j axis flipped: det = −1
+}
+
+std::string MessageOf(const std::function<void()>& f)
+{
+  try
+  {
+    f();
+  }
+  catch (const std::exception& e)
+  {
+    return e.what();
+  }
+  return "(no exception)";
+}
+
+TEST(GrowLumenRegion, NoisyPhantom08x08x10_DiceAbove095)
+{
+  PhantomParams p; // 0.8 × 0.8 × 1.0 mm, noise 20 HU, blur 1 mm
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  const LumenSegmentation lumen = GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, RegionGrowingParams{});
+  const auto overlap = CompareWithTruth(*lumen.mask, *phantom.labels);
+  EXPECT_GE(overlap.Dice(), minimumDice);
+  // Volume: a boundary shift of a quarter voxel over the whole surface is about 3 %.
+  EXPECT_NEAR(lumen.volumeMl, phantom.truth.lumenVolumeMl, 0.03 * phantom.truth.lumenVolumeMl);
+  // The window is centred on the lumen HU with the noise it was given (20 HU):
+  // median within 10 HU, robust sigma within 25 %.
+  EXPECT_NEAR(lumen.seedMedianHu, p.lumenHu, 10.0);
+  EXPECT_NEAR(lumen.seedSigmaHu, p.noiseSigmaHu, 0.25 * p.noiseSigmaHu);
+  // The boundary is placed at the half-maximum between lumen and tissue (tissue within 15 HU).
+  EXPECT_NEAR(lumen.tissueHu, p.tissueHu, 15.0);
+  EXPECT_TRUE(lumen.warnings.empty());
+}
+
+TEST(GrowLumenRegion, AnisotropicObliqueFlippedGrid_DiceAbove095)
+{
+  PhantomParams p;
+  p.spacingMm = { 0.7, 0.7, 2.0 };
+  p.directionLps = ObliqueFlippedDirection();
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  for (int r = 0; r < 3; ++r) // the grid is the oblique, flipped one that was asked for
+    for (int c = 0; c < 3; ++c)
+      ASSERT_NEAR(phantom.ct->GetDirection()(r, c), p.directionLps(r, c), 1e-12);
+  const LumenSegmentation lumen = GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, RegionGrowingParams{});
+  EXPECT_GE(CompareWithTruth(*lumen.mask, *phantom.labels).Dice(), minimumDice);
+  // The mask is on the exact grid of the input.
+  EXPECT_EQ(lumen.mask->GetLargestPossibleRegion(), phantom.ct->GetLargestPossibleRegion());
+  EXPECT_EQ(lumen.mask->GetDirection(), phantom.ct->GetDirection());
+  EXPECT_EQ(lumen.mask->GetOrigin(), phantom.ct->GetOrigin());
+  EXPECT_EQ(lumen.mask->GetSpacing(), phantom.ct->GetSpacing());
+}
+
+TEST(GrowLumenRegion, VertebraTwoMillimetresFromSac_NoBoneInLumen)
+{
+  PhantomParams p;
+  p.includeBone = true;
+  p.boneGapMm = 2.0;
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  const auto before = CompareWithTruth(*phantom.labels, *phantom.labels);
+  ASSERT_GT(before.labelCount[BoneLabel], 0); // the phantom has bone to leak into
+  const LumenSegmentation lumen = GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, RegionGrowingParams{});
+  const auto overlap = CompareWithTruth(*lumen.mask, *phantom.labels);
+  // Not one bone voxel: bone begins 2 mm (2.5 voxels) beyond the lumen, so any is a leak.
+  EXPECT_EQ(overlap.perLabel[BoneLabel], 0);
+  EXPECT_GE(overlap.Dice(), minimumDice);
+}
+
+class EnhancingKidneys : public ::testing::TestWithParam<double>
+{
+};
+
+TEST_P(EnhancingKidneys, AtTheRenalArteryEnds_NotFlooded)
+{
+  PhantomParams p;
+  p.includeKidneys = true;
+  p.kidneyHu = GetParam();
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  const LumenSegmentation lumen = GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, RegionGrowingParams{});
+  const auto overlap = CompareWithTruth(*lumen.mask, *phantom.labels);
+  ASSERT_GT(overlap.labelCount[KidneyLabel], 0);
+  // Below 1 % of the parenchyma: only the voxels the boundary refinement may take around the
+  // renal artery's end (its 2 mm reach), never the organ.
+  EXPECT_LT(overlap.FractionOf(KidneyLabel), 0.01);
+  EXPECT_GE(overlap.Dice(), minimumDice);
+}
+
+INSTANTIATE_TEST_SUITE_P(GrowLumenRegion, EnhancingKidneys, ::testing::Values(150.0, 200.0));
+
+TEST(GrowLumenRegion, ManualWindowBelowKidneyHu_FloodDetected)
+{
+  PhantomParams p;
+  p.includeKidneys = true;
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  RegionGrowingParams params;
+  params.thresholdMode = ThresholdMode::Manual;
+  params.lowerHu = 120.0; // below the kidneys' 180 HU: growing floods them through the renal arteries
+  params.upperHu = 600.0;
+  const std::string message =
+    MessageOf([&] { GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, params); });
+  EXPECT_NE(message.find("leaked into darker tissue"), std::string::npos) << message;
+  EXPECT_NE(message.find("now 120 HU"), std::string::npos) << message;
+  EXPECT_THROW(GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, params), AlgorithmError);
+}
+
+/// A cylinder of lumen joined to a block of the same HU by a bridge one voxel thick: the
+/// leak phantom of STYLE.md B6.
+TEST(GrowLumenRegion, BlockBehindOneVoxelBridge_CutAndWarned)
+{
+  auto ct = CtImage::New();
+  CtImage::RegionType region;
+  region.SetSize({ { 80, 80, 60 } });
+  ct->SetRegions(region);
+  ct->Allocate();
+  ct->FillBuffer(40);
+  long blockVoxels = 0;
+  for (long k = 0; k < 60; ++k)
+    for (long j = 0; j < 80; ++j)
+      for (long i = 0; i < 80; ++i)
+      {
+        const bool cylinder = (i - 25) * (i - 25) + (j - 40) * (j - 40) <= 64; // radius 8 mm
+        const bool block = i >= 50 && i < 70 && j >= 30 && j < 50 && k >= 20 && k < 40;
+        const bool bridge = i > 32 && i < 50 && j == 40 && k == 30;           // 1 × 1 voxel
+        blockVoxels += block;
+        if (cylinder || block || bridge)
+        {
+          ct->SetPixel({ { i, j, k } }, 350);
+        }
+      }
+  const LumenSegmentation lumen = GrowLumenRegion(*ct, Point3(25, 40, 30), RegionGrowingParams{});
+  long inBlock = 0;
+  for (long k = 20; k < 40; ++k)
+    for (long j = 30; j < 50; ++j)
+      for (long i = 50; i < 70; ++i)
+        inBlock += lumen.mask->GetPixel({ { i, j, k } });
+  EXPECT_EQ(inBlock, 0);
+  ASSERT_EQ(lumen.warnings.size(), 1u);
+  EXPECT_NE(lumen.warnings[0].find("Leak cut: 8.0 mL"), std::string::npos) << lumen.warnings[0];
+  // All that was cut: the block, most of the bridge, and the disc's outermost corner voxels,
+  // which the opening trims and the boundary refinement puts back (under 2 per slice).
+  EXPECT_GE(lumen.cutVolumeMl, blockVoxels / 1000.0);
+  EXPECT_LE(lumen.cutVolumeMl, (blockVoxels + 17 + 2 * 60) / 1000.0);
+  // The cylinder itself is whole: 60 slices of the 197-voxel disc of radius 8.
+  EXPECT_NEAR(lumen.volumeMl, 60 * 197 / 1000.0, 0.05);
+}
+
+TEST(GrowLumenRegion, LumenOverVolumeLimit_AlgorithmErrorNamesLimit)
+{
+  PhantomParams p;
+  p.spacingMm = { 1.5, 1.5, 2.0 };
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  RegionGrowingParams params;
+  params.maximumLumenVolumeMl = 50.0; // the phantom's lumen is about 165 mL
+  const std::string message = MessageOf([&] { GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, params); });
+  EXPECT_NE(message.find("limit 50 mL"), std::string::npos) << message;
+  EXPECT_THROW(GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, params), AlgorithmError);
+}
+
+class SmallPhantom : public ::testing::Test
+{
+protected:
+  static void SetUpTestSuite()
+  {
+    PhantomParams p;
+    p.spacingMm = { 1.5, 1.5, 2.0 };
+    phantom = new AorticPhantom(GenerateAorticPhantom(p));
+  }
+  static void TearDownTestSuite() { delete phantom; }
+  static AorticPhantom* phantom;
+};
+AorticPhantom* SmallPhantom::phantom = nullptr;
+
+TEST_F(SmallPhantom, SeedOutsideImage_InputErrorNamesSeedAndBounds)
+{
+  const std::string message =
+    MessageOf([&] { GrowLumenRegion(*phantom->ct, Point3(5000, 0, 60), RegionGrowingParams{}); });
+  EXPECT_NE(message.find("Seed (5000.0, 0.0, 60.0) mm LPS lies outside the image (x "), std::string::npos) << message;
+  EXPECT_THROW(GrowLumenRegion(*phantom->ct, Point3(5000, 0, 60), RegionGrowingParams{}), InputError);
+}
+
+TEST_F(SmallPhantom, SeedInTissue_InputErrorNamesHu)
+{
+  const Point3 tissue(0, -45, 60); // anterior to the sac, 17 mm outside its wall
+  const std::string message = MessageOf([&] { GrowLumenRegion(*phantom->ct, tissue, RegionGrowingParams{}); });
+  EXPECT_NE(message.find("lies in tissue of"), std::string::npos) << message;
+  EXPECT_NE(message.find("at least 150 HU"), std::string::npos) << message;
+  EXPECT_THROW(GrowLumenRegion(*phantom->ct, tissue, RegionGrowingParams{}), InputError);
+}
+
+TEST_F(SmallPhantom, InvertedManualWindow_InputErrorNamesBoth)
+{
+  RegionGrowingParams params;
+  params.thresholdMode = ThresholdMode::Manual;
+  params.lowerHu = 600;
+  params.upperHu = 200;
+  const std::string message = MessageOf([&] { GrowLumenRegion(*phantom->ct, phantom->truth.seedLps, params); });
+  EXPECT_EQ(message, "lowerHu (600.0 HU) must be less than upperHu (200.0 HU); swap them or widen the window.");
+  EXPECT_THROW(GrowLumenRegion(*phantom->ct, phantom->truth.seedLps, params), InputError);
+}
+
+TEST_F(SmallPhantom, SeedOutsideManualWindow_InputError)
+{
+  RegionGrowingParams params;
+  params.thresholdMode = ThresholdMode::Manual;
+  params.lowerHu = 500; // the lumen is 350 HU
+  params.upperHu = 900;
+  const std::string message = MessageOf([&] { GrowLumenRegion(*phantom->ct, phantom->truth.seedLps, params); });
+  EXPECT_NE(message.find("outside the manual window 500 to 900 HU"), std::string::npos) << message;
+  EXPECT_THROW(GrowLumenRegion(*phantom->ct, phantom->truth.seedLps, params), InputError);
+}
+
+TEST_F(SmallPhantom, SeedInVesselNarrowerThanOpening_InputError)
+{
+  RegionGrowingParams params;
+  params.leakOpeningRadiusMm = 5.0; // a 10 mm ball cannot fit in the 6 mm renal artery
+  const Point3 inRightRenal(-30, 10.0 * 30 / 64, phantom->truth.landmarks[0].lps.z() - 5.0 * 30 / 64);
+  ASSERT_EQ(phantom->truth.landmarks[0].name, "rightRenalOstium");
+  const std::string message = MessageOf([&] { GrowLumenRegion(*phantom->ct, inRightRenal, params); });
+  EXPECT_NE(message.find("narrower than the leak-cutting opening (10.0 mm across)"), std::string::npos) << message;
+  EXPECT_THROW(GrowLumenRegion(*phantom->ct, inRightRenal, params), InputError);
+}
+
+TEST_F(SmallPhantom, ParameterOutOfRange_InputErrorNamesParameterAndValue)
+{
+  const std::vector<std::pair<std::string, std::function<void(RegionGrowingParams&)>>> cases{
+    { "lowerHu is -2000.00 HU", [](auto& p) { p.lowerHu = -2000; } },
+    { "upperHu is 4000.00 HU", [](auto& p) { p.upperHu = 4000; } },
+    { "windowSigmas is 0.50", [](auto& p) { p.windowSigmas = 0.5; } },
+    { "seedMinimumHu is 5000.00 HU", [](auto& p) { p.seedMinimumHu = 5000; } },
+    { "leakOpeningRadiusMm is -1.00 mm", [](auto& p) { p.leakOpeningRadiusMm = -1; } },
+    { "maximumLumenVolumeMl is 0.00 mL", [](auto& p) { p.maximumLumenVolumeMl = 0; } },
+    { "seedNeighbourhoodRadiusMm is 50.00 mm", [](auto& p) { p.seedNeighbourhoodRadiusMm = 50; } },
+    { "minimumHalfWindowHu is -1.00 HU", [](auto& p) { p.minimumHalfWindowHu = -1; } },
+    { "refineDistanceMm is 11.00 mm", [](auto& p) { p.refineDistanceMm = 11; } },
+    { "tissueDepthMm is 30.00 mm", [](auto& p) { p.tissueDepthMm = 30; } },
+    { "windowSigmas is nan", [](auto& p) { p.windowSigmas = std::nan(""); } },
+  };
+  for (const auto& [expected, plant] : cases)
+  {
+    RegionGrowingParams params;
+    plant(params);
+    const std::string message = MessageOf([&] { GrowLumenRegion(*phantom->ct, phantom->truth.seedLps, params); });
+    EXPECT_EQ(message.rfind(expected, 0), 0u) << message;
+    EXPECT_THROW(ValidateRegionGrowingParams(params), InputError);
+  }
+}
+
+TEST_F(SmallPhantom, SameSeedTwice_IdenticalResult)
+{
+  const auto a = GrowLumenRegion(*phantom->ct, phantom->truth.seedLps, RegionGrowingParams{});
+  const auto b = GrowLumenRegion(*phantom->ct, phantom->truth.seedLps, RegionGrowingParams{});
+  const auto overlap = CompareWithTruth(*a.mask, *b.mask);
+  EXPECT_EQ(overlap.truthLumen, overlap.segmented);
+  EXPECT_EQ(overlap.both, overlap.segmented);
+}
+
+} // namespace
+} // namespace sgp

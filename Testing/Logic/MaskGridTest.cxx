@@ -1,0 +1,96 @@
+// Tests of the binary-mask operations against masks whose answer is counted by hand.
+#include <gtest/gtest.h>
+
+#include "MaskGrid.h"
+
+namespace sgp
+{
+namespace
+{
+
+MaskGrid Cube(long boxSize, long first, long last)
+{
+  MaskGrid grid({ boxSize, boxSize, boxSize });
+  for (long k = first; k <= last; ++k)
+    for (long j = first; j <= last; ++j)
+      for (long i = first; i <= last; ++i)
+        grid.voxels[grid.Flat(i, j, k)] = 1;
+  return grid;
+}
+
+TEST(MaskGrid, BallOffsets_CountsOfDiscreteBalls)
+{
+  EXPECT_EQ(BallOffsets({ 0, 0, 0 }).size(), 1u);
+  EXPECT_EQ(BallOffsets({ 1, 1, 1 }).size(), 7u);  // centre and six faces
+  EXPECT_EQ(BallOffsets({ 2, 2, 2 }).size(), 33u); // lattice points with i²+j²+k² ≤ 4
+  EXPECT_EQ(BallOffsets({ 1, 1, 0 }).size(), 5u);  // flat along k
+}
+
+TEST(MaskGrid, FlatAndIjk_AreInverse)
+{
+  MaskGrid grid({ 4, 5, 6 });
+  EXPECT_EQ(grid.Flat(3, 4, 5), grid.Count() - 1);
+  EXPECT_EQ(grid.Ijk(grid.Flat(2, 3, 4)), (std::array<long, 3>{ 2, 3, 4 }));
+}
+
+TEST(MaskGrid, ErodeThenDilateCube_ShrinksThenRestoresFaces)
+{
+  const MaskGrid cube = Cube(12, 2, 8); // 7³
+  const auto cross = BallOffsets({ 1, 1, 1 });
+  const MaskGrid eroded = Erode(cube, cross);
+  EXPECT_EQ(eroded.CountForeground(), 5 * 5 * 5);
+  // Dilating the 5³ core by the cross gives the 7³ cube less its 12 edges of 5 voxels and 8 corners.
+  EXPECT_EQ(Dilate(eroded, cross).CountForeground(), 7 * 7 * 7 - 12 * 5 - 8);
+}
+
+TEST(MaskGrid, ErodeAtBoxBorder_OutsideIsBackground)
+{
+  const MaskGrid full = Cube(5, 0, 4);
+  EXPECT_EQ(Erode(full, BallOffsets({ 1, 1, 1 })).CountForeground(), 3 * 3 * 3);
+}
+
+TEST(MaskGrid, ConnectedComponent_FaceConnectivityOnly)
+{
+  MaskGrid grid({ 5, 5, 5 });
+  grid.voxels[grid.Flat(1, 1, 1)] = 1;
+  grid.voxels[grid.Flat(2, 1, 1)] = 1; // face neighbour
+  grid.voxels[grid.Flat(3, 2, 1)] = 1; // edge neighbour of (2,1,1): another component
+  EXPECT_EQ(ConnectedComponent(grid, grid.Flat(1, 1, 1)).CountForeground(), 2);
+  EXPECT_EQ(ConnectedComponent(grid, grid.Flat(0, 0, 0)).CountForeground(), 0);
+  const ComponentSizes sizes = MeasureComponents(grid);
+  EXPECT_EQ(sizes.sizes.size(), 2u);
+  EXPECT_EQ(sizes.largestSize, 2);
+  EXPECT_EQ(sizes.largestVoxel, grid.Flat(1, 1, 1));
+}
+
+TEST(MaskGrid, FillHoles_FillsCavityNotTunnel)
+{
+  MaskGrid shell = Cube(9, 1, 7);
+  shell.voxels[shell.Flat(4, 4, 4)] = 0; // an enclosed cavity
+  for (long i = 0; i <= 8; ++i)
+  {
+    shell.voxels[shell.Flat(i, 2, 2)] = 0; // a tunnel open to the outside at both ends
+  }
+  MaskGrid filled = shell;
+  FillHoles(filled);
+  EXPECT_EQ(filled.voxels[filled.Flat(4, 4, 4)], 1);
+  EXPECT_EQ(filled.voxels[filled.Flat(4, 2, 2)], 0);
+  EXPECT_EQ(filled.CountForeground(), shell.CountForeground() + 1);
+}
+
+TEST(MaskGrid, GrowConstrained_StopsAfterStepsAndAtRejectedVoxels)
+{
+  MaskGrid line({ 10, 1, 1 });
+  line.voxels[0] = 1;
+  std::vector<bool> accept(10, true);
+  accept[6] = false;
+  MaskGrid two = line;
+  GrowConstrained(two, accept, 2);
+  EXPECT_EQ(two.CountForeground(), 3);
+  MaskGrid many = line;
+  GrowConstrained(many, accept, 50);
+  EXPECT_EQ(many.CountForeground(), 6); // voxels 0–5; 6 is rejected and blocks the rest
+}
+
+} // namespace
+} // namespace sgp
