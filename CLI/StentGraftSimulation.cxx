@@ -8,6 +8,7 @@
 #include <vtkObject.h>
 
 #include "GrowLumenRegion.h"
+#include "CLPSupport.h"
 #include "IO/OutputTransaction.h"
 #include "IO/ReadCtImage.h"
 #include "IO/WriteImage.h"

@@ -4,6 +4,7 @@
 
 #include <itkObject.h>
 
+#include "CLPSupport.h"
 #include "IO/OutputTransaction.h"
 #include "IO/WriteImage.h"
 #include "IO/WritePhantomTruth.h"

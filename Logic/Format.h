@@ -15,7 +15,8 @@ namespace sgp
 inline std::string FormatNumber(double value, int decimals = 1)
 {
   char buffer[64];
-  std::snprintf(buffer, sizeof(buffer), "%.*f", decimals, value);
+  // + 0.0 turns a negative zero (a negated coordinate of 0) into "0.0" rather than "-0.0".
+  std::snprintf(buffer, sizeof(buffer), "%.*f", decimals, value + 0.0);
   return buffer;
 }
 

@@ -1,0 +1,91 @@
+#!/usr/bin/python3
+"""Runs StentGraftPlanner's benchmarks and prints the side-by-side table for the README.
+
+Usage: run_benchmarks.py BUILD_DIR [--workdir DIR]
+
+1. The Google Benchmark program (segmentation of a 512 x 512 x 400 phantom in memory).
+2. The whole CLI run as Slicer would start it, on the same phantom written as a gzip NRRD:
+   wall time, peak resident memory of the process (getrusage of the child), and the per-stage
+   times from its <filter-time> tags.
+Targets come from the issues; the table says for each whether it was met. Timings are not
+asserted anywhere else: tests check correctness, this script measures speed.
+"""
+import argparse
+import json
+import os
+import platform
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+
+def cpu_name():
+    try:
+        for line in open("/proc/cpuinfo"):
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or "unknown CPU"
+
+
+def run_measured(argv):
+    """Runs argv; returns (seconds, peak RSS in MiB, stdout, stderr, exit code)."""
+    start = time.monotonic()
+    with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
+        process = subprocess.Popen(argv, stdout=out, stderr=err)
+        _, status, usage = os.wait4(process.pid, 0)
+        seconds = time.monotonic() - start
+        out.seek(0)
+        err.seek(0)
+        code = os.waitstatus_to_exitcode(status)
+        return seconds, usage.ru_maxrss / 1024.0, out.read().decode(), err.read().decode(), code
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("build")
+    ap.add_argument("--workdir", default=None)
+    args = ap.parse_args()
+    build = os.path.abspath(args.build)
+    work = args.workdir or tempfile.mkdtemp(prefix="sgp-bench-")
+    os.makedirs(work, exist_ok=True)
+    rows = []
+
+    bench = os.path.join(build, "Benchmarks", "sgpSegmentationBenchmark")
+    result = subprocess.run([bench, "--benchmark_format=json"], capture_output=True, text=True, check=True)
+    for b in json.loads(result.stdout)["benchmarks"]:
+        seconds = b["real_time"] / 1000.0 if b.get("time_unit") == "ms" else b["real_time"]
+        rows.append(("Segmentation, 512x512x400 in memory (Google Benchmark)", "%.2f s" % seconds, "< 2 s",
+                     seconds < 2.0, "Dice %.3f" % b.get("dice", float("nan"))))
+
+    phantom = os.path.join(build, "CLI", "SyntheticAorticPhantom")
+    cli = os.path.join(build, "CLI", "StentGraftSimulation")
+    volume = os.path.join(work, "phantom-512.nrrd")
+    ret = os.path.join(work, "phantom.params")
+    subprocess.run([phantom, "--returnparameterfile", ret, "--spacingMm", "0.7,0.7,1.0", "--sizeVoxels",
+                    "512,512,400", "--includeBone", "--includeKidneys", volume], check=True, capture_output=True)
+    seed = dict(l.split(" = ", 1) for l in open(ret).read().splitlines())["seedRas"]
+    seconds, rss, out, err, code = run_measured(
+        [cli, "--returnparameterfile", os.path.join(work, "run.params"), "--seed", seed, "--outputLabelMap",
+         os.path.join(work, "lumen.nrrd"), volume])
+    if code != 0:
+        sys.exit("StentGraftSimulation failed: " + err)
+    rows.append(("Whole CLI run (read gzip NRRD, segment, write)", "%.2f s" % seconds, "", None, ""))
+    rows.append(("Peak memory of the whole CLI run", "%.0f MiB" % rss, "< 2048 MiB", rss < 2048, ""))
+    stages = re.findall(r"<filter-end>\s*<filter-name>([^<]*)</filter-name>\s*<filter-time>([^<]*)</filter-time>", out)
+    for name, t in stages:
+        rows.append(("  stage %s" % name, "%.2f s" % float(t), "", None, ""))
+
+    print("Machine: %s, %d cores, %s" % (cpu_name(), os.cpu_count(), platform.platform()))
+    print()
+    print("| measurement | result | target | met | note |")
+    print("| --- | --- | --- | --- | --- |")
+    for what, value, target, met, note in rows:
+        print("| %s | %s | %s | %s | %s |" % (what, value, target, "" if met is None else ("yes" if met else "NO"), note))
+
+
+if __name__ == "__main__":
+    main()
