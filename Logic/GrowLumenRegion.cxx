@@ -7,6 +7,7 @@
 
 #include <itkConnectedThresholdImageFilter.h>
 
+#include "CheckRange.h"
 #include "Errors.h"
 #include "Format.h"
 #include "ImageGeometry.h"
@@ -185,13 +186,7 @@ short ClampToShort(double value)
 
 void ValidateRegionGrowingParams(const RegionGrowingParams& params)
 {
-  const auto check = [](const char* name, double value, double lo, double hi, const char* unit) {
-    if (!(value >= lo && value <= hi))
-    {
-      throw InputError(std::string(name) + " is " + FormatNumber(value, 2) + " " + unit + "; expected " +
-                       FormatNumber(lo, 1) + " to " + FormatNumber(hi, 1) + " " + unit + ".");
-    }
-  };
+  const auto check = CheckRange;
   check("lowerHu", params.lowerHu, -1024, 3071, "HU");
   check("upperHu", params.upperHu, -1024, 3071, "HU");
   check("windowSigmas", params.windowSigmas, 1, 10, "standard deviations");

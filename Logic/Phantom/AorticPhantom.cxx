@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 
+#include "../CheckRange.h"
 #include "../Errors.h"
 #include "../Format.h"
 
@@ -328,13 +329,7 @@ double EllipsoidSignedDistance(const Ellipsoid& e, const Point3& x)
 
 void ValidatePhantomParams(const PhantomParams& p)
 {
-  const auto check = [](const std::string& name, double value, double lo, double hi, const char* unit) {
-    if (!(value >= lo && value <= hi))
-    {
-      throw InputError(name + " is " + FormatNumber(value, 2) + " " + unit + "; expected " + FormatNumber(lo, 1) +
-                       " to " + FormatNumber(hi, 1) + " " + unit + ".");
-    }
-  };
+  const auto check = CheckRange;
   const char* axes[3] = { "i", "j", "k" };
   int sized = 0;
   for (int a = 0; a < 3; ++a)

@@ -13,6 +13,7 @@
 #include <itkRGBPixel.h>
 
 #include "Errors.h"
+#include "TemporaryFolder.h"
 #include "ImageGeometry.h"
 #include "IO/ReadCtImage.h"
 
@@ -23,17 +24,9 @@ namespace
 
 namespace fs = std::filesystem;
 
-class ReadCtImageTest : public ::testing::Test
+class ReadCtImageTest : public testing::TemporaryFolderTest
 {
 protected:
-  void SetUp() override
-  {
-    folder = fs::temp_directory_path() /
-             ("sgp-read-" + std::to_string(::getpid()) + "-" +
-              ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(folder);
-  }
-  void TearDown() override { fs::remove_all(folder); }
 
   /// 20 × 16 × 12 voxels of distinct values on an anisotropic grid; `oblique` rotates it.
   static CtImage::Pointer MakeRamp(bool oblique)
@@ -109,7 +102,6 @@ protected:
     return "(no InputError)";
   }
 
-  fs::path folder;
 };
 
 // ITK stores NRRD and MetaImage geometry as decimal text: exact to 1e-6 of a voxel.

@@ -14,6 +14,7 @@
 #include <vtkXMLPolyDataReader.h>
 
 #include "Errors.h"
+#include "TemporaryFolder.h"
 #include "IO/OutputTransaction.h"
 #include "IO/WriteImage.h"
 #include "IO/WriteModel.h"
@@ -26,16 +27,9 @@ namespace
 
 namespace fs = std::filesystem;
 
-class WriteOutputsTest : public ::testing::Test
+class WriteOutputsTest : public testing::TemporaryFolderTest
 {
 protected:
-  void SetUp() override
-  {
-    folder = fs::temp_directory_path() / ("sgp-write-" + std::to_string(::getpid()) + "-" +
-                                          ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(folder);
-  }
-  void TearDown() override { fs::remove_all(folder); }
 
   std::vector<std::string> Listing() const
   {
@@ -65,7 +59,6 @@ protected:
     return polyData;
   }
 
-  fs::path folder;
 };
 
 TEST_F(WriteOutputsTest, VtpModel_CarriesSpaceLpsAndPointsUnchanged)
