@@ -7,7 +7,9 @@
 #include <itkObject.h>
 #include <vtkObject.h>
 
+#include "AssignInscribedRadii.h"
 #include "GrowLumenRegion.h"
+#include "IO/WriteCenterlines.h"
 #include "CLPSupport.h"
 #include "IO/OutputTransaction.h"
 #include "IO/ReadCtImage.h"
@@ -42,8 +44,15 @@ int main(int argc, char* argv[])
     using namespace sgp;
     const RegionGrowingParams growParams = MakeRegionGrowingParams(
       thresholdMode, lowerHu, upperHu, windowSigmas, seedMinimumHu, leakOpeningRadiusMm, maximumLumenVolumeMl);
-    ValidateParameters(inputVolume, seed, growParams);
-    SlicerProgress progress(std::cout, { { "ReadVolume", 2.0 }, { "SegmentLumen", 6.0 }, { "WriteOutputs", 2.0 } });
+    const SkeletonGraphParams graphParams = MakeSkeletonGraphParams(spurLengthRatio);
+    const CenterlineParams centerlineParams = MakeCenterlineParams(centerlineStepMm, centerlineSmoothingMm);
+    ValidateParameters(inputVolume, seed, growParams, graphParams, centerlineParams);
+    const bool wantCenterlines = !outputCenterlines.empty() || !outputLandmarks.empty();
+    SlicerProgress progress(std::cout, { { "ReadVolume", 2.0 },
+                                         { "SegmentLumen", 4.0 },
+                                         { "ThinLumen", 2.0 },
+                                         { "ExtractCenterlines", 1.0 },
+                                         { "WriteOutputs", 1.0 } });
 
     progress.Begin("ReadVolume", "Reading the CT volume");
     const CtVolume volume = ReadCtImage(inputVolume);
@@ -58,11 +67,31 @@ int main(int argc, char* argv[])
     upperHuUsed = lumen.upperHu;
     edgeHuUsed = lumen.edgeHu;
 
+    CenterlineTree centerlines;
+    if (wantCenterlines)
+    {
+      progress.Begin("ThinLumen", "Thinning the lumen into its skeleton");
+      const Skeleton skeleton = ThinLabelMap(*lumen.mask, progress.Callback());
+      progress.Begin("ExtractCenterlines", "Labelling the aorta, the iliac arteries and their branches");
+      const SkeletonGraph graph = BuildSkeletonGraph(skeleton, *lumen.mask, graphParams);
+      progress.Report(0.3);
+      centerlines = LabelAortoIliacTree(graph, centerlineParams);
+      AssignInscribedRadii(centerlines, skeleton);
+    }
+
     progress.Begin("WriteOutputs", "Writing the outputs");
     OutputTransaction outputs;
     if (!outputLabelMap.empty())
     {
       WriteLabelMap(*lumen.mask, outputs.Stage(outputLabelMap));
+    }
+    if (!outputCenterlines.empty())
+    {
+      WriteCenterlines(centerlines, outputs.Stage(outputCenterlines));
+    }
+    if (!outputLandmarks.empty())
+    {
+      WriteLandmarks(centerlines, outputs.Stage(outputLandmarks));
     }
     if (!returnParameterFile.empty())
     {
@@ -78,9 +107,14 @@ int main(int argc, char* argv[])
     std::cout << "Lumen: " << FormatReturnValue(lumenVolumeMl) << " mL; window " << FormatReturnValue(lowerHuUsed)
               << " to " << FormatReturnValue(upperHuUsed) << " HU (seed median " << lumen.seedMedianHu << " HU, sigma "
               << lumen.seedSigmaHu << " HU); boundary at " << FormatReturnValue(edgeHuUsed) << " HU" << std::endl;
-    if (!outputLabelMap.empty())
+    if (wantCenterlines)
     {
-      std::cout << "Lumen label map: " << outputLabelMap << std::endl;
+      std::cout << "Centerlines: aorta " << FormatReturnValue(centerlines.aorta.LengthMm()) << " mm, right iliac "
+                << FormatReturnValue(centerlines.rightIliac.LengthMm()) << " mm, left iliac "
+                << FormatReturnValue(centerlines.leftIliac.LengthMm()) << " mm; side branches:";
+      for (const Centerline& c : centerlines.sideBranches)
+        std::cout << " " << c.name;
+      std::cout << std::endl;
     }
     return EXIT_SUCCESS;
   }

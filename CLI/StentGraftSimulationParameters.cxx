@@ -44,9 +44,26 @@ RegionGrowingParams MakeRegionGrowingParams(const std::string& thresholdMode,
   return params;
 }
 
+SkeletonGraphParams MakeSkeletonGraphParams(double spurLengthRatio)
+{
+  SkeletonGraphParams params;
+  params.spurLengthRatio = spurLengthRatio;
+  return params;
+}
+
+CenterlineParams MakeCenterlineParams(double centerlineStepMm, double centerlineSmoothingMm)
+{
+  CenterlineParams params;
+  params.stepMm = centerlineStepMm;
+  params.smoothingMm = centerlineSmoothingMm;
+  return params;
+}
+
 void ValidateParameters(const std::string& inputVolume,
                         const std::vector<float>& seed,
-                        const RegionGrowingParams& params)
+                        const RegionGrowingParams& params,
+                        const SkeletonGraphParams& graphParams,
+                        const CenterlineParams& centerlineParams)
 {
   if (inputVolume.empty())
   {
@@ -58,6 +75,8 @@ void ValidateParameters(const std::string& inputVolume,
   }
   RasToLps(seed);
   ValidateRegionGrowingParams(params);
+  ValidateSkeletonGraphParams(graphParams);
+  ValidateCenterlineParams(centerlineParams);
 }
 
 } // namespace sgp

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "GrowLumenRegion.h"
+#include "LabelAortoIliacTree.h"
+#include "SkeletonGraph.h"
 #include "Types.h"
 
 namespace sgp
@@ -27,10 +29,16 @@ RegionGrowingParams MakeRegionGrowingParams(const std::string& thresholdMode,
                                             double leakOpeningRadiusMm,
                                             double maximumLumenVolumeMl);
 
+/// Copies the centerline parameters.
+SkeletonGraphParams MakeSkeletonGraphParams(double spurLengthRatio);
+CenterlineParams MakeCenterlineParams(double centerlineStepMm, double centerlineSmoothingMm);
+
 /// Checks the inputs a run needs: an input volume, a seed of three numbers, and parameters in
 /// range. \throws InputError naming the value and what was expected.
 void ValidateParameters(const std::string& inputVolume,
                         const std::vector<float>& seed,
-                        const RegionGrowingParams& params);
+                        const RegionGrowingParams& params,
+                        const SkeletonGraphParams& graphParams = {},
+                        const CenterlineParams& centerlineParams = {});
 
 } // namespace sgp

@@ -69,7 +69,8 @@ CtImage::Pointer ReadDicomSeries(const std::string& folder, std::vector<std::str
   return reader->GetOutput();
 }
 
-CtImage::Pointer ReadVolumeFile(const std::string& path)
+/// Checks the file's header (3-D, one component) and returns its ImageIO.
+itk::ImageIOBase::Pointer OpenVolumeFile(const std::string& path)
 {
   itk::ImageIOBase::Pointer io =
     itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::IOFileModeEnum::ReadMode);
@@ -104,8 +105,14 @@ CtImage::Pointer ReadVolumeFile(const std::string& path)
                      " components per voxel (" + io->GetPixelTypeAsString(io->GetPixelType()) +
                      "); expected a scalar CT volume in HU.");
   }
-  auto reader = itk::ImageFileReader<CtImage>::New();
-  reader->SetImageIO(io);
+  return io;
+}
+
+template <typename Image>
+typename Image::Pointer ReadVolumeFile(const std::string& path)
+{
+  auto reader = itk::ImageFileReader<Image>::New();
+  reader->SetImageIO(OpenVolumeFile(path));
   reader->SetFileName(path);
   reader->Update();
   return reader->GetOutput();
@@ -118,7 +125,8 @@ CtVolume ReadCtImage(const std::string& path)
   CtVolume volume;
   try
   {
-    volume.image = std::filesystem::is_directory(path) ? ReadDicomSeries(path, volume.warnings) : ReadVolumeFile(path);
+    volume.image =
+      std::filesystem::is_directory(path) ? ReadDicomSeries(path, volume.warnings) : ReadVolumeFile<CtImage>(path);
   }
   catch (const itk::ExceptionObject& e)
   {
@@ -126,6 +134,19 @@ CtVolume ReadCtImage(const std::string& path)
                      "; give a readable 3-D CT volume.");
   }
   return volume;
+}
+
+LabelImage::Pointer ReadLabelMap(const std::string& path)
+{
+  try
+  {
+    return ReadVolumeFile<LabelImage>(path);
+  }
+  catch (const itk::ExceptionObject& e)
+  {
+    throw InputError("Cannot read the label map '" + path + "': " + FirstLine(e.GetDescription()) +
+                     "; give a readable 3-D label map.");
+  }
 }
 
 } // namespace sgp

@@ -33,4 +33,9 @@ struct CtVolume
 
 CtVolume ReadCtImage(const std::string& path);
 
+/// Reads a label map (any integer pixel type, NRRD / NIfTI / MetaImage, e.g. a Slicer `.seg.nrrd`
+/// with one layer) as LabelImage; values are cast to unsigned char.
+/// \throws InputError as ReadCtImage does (not 3-D, several components, unreadable).
+LabelImage::Pointer ReadLabelMap(const std::string& path);
+
 } // namespace sgp

@@ -82,7 +82,7 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   const double sacBottom = distalNeckLengthMm, sacTop = sacBottom + p.aneurysmLengthMm;
   const double siteZ = sacTop + p.neckLengthMm; // lower edge of the lowest (right) renal ostium
   const double rightRenalZ = siteZ + renalRadiusMm, leftRenalZ = rightRenalZ + 6.0;
-  const double smaZ = siteZ + 20.0, coeliacZ = siteZ + 35.0, topZ = siteZ + 50.0;
+  const double smaZ = siteZ + 20.0, coeliacZ = siteZ + 35.0, topZ = siteZ + 80.0;
   const double amplitude = p.maxAneurysmDiameterMm / 2 - 0.5 * (rNeck + rDistal);
   const auto radiusAtZ = [=](double z) {
     if (z >= sacTop)
@@ -169,7 +169,7 @@ void SampleVessels(const Anatomy& anatomy, PhantomTruth& truth)
   for (const Tube& tube : anatomy.tubes)
   {
     std::vector<Point3> points;
-    std::vector<double> radii;
+    std::vector<double> radii, abscissa;
     double start = 0.0;
     for (std::size_t k = 0; k + 1 < tube.axis.size(); ++k)
     {
@@ -179,16 +179,29 @@ void SampleVessels(const Anatomy& anatomy, PhantomTruth& truth)
       {
         points.push_back(a + (b - a) * (s / length));
         radii.push_back(tube.radiusAt(start + s));
+        abscissa.push_back(start + s);
       }
       start += length;
     }
     points.push_back(tube.axis.back());
     radii.push_back(tube.radiusAt(start));
-    PhantomVessel vessel{ tube.name, Points(points.size(), 3), Eigen::VectorXd(radii.size()) };
+    abscissa.push_back(start);
+    PhantomVessel vessel{ tube.name, Points(points.size(), 3), Eigen::VectorXd(radii.size()),
+                          Eigen::VectorXd(radii.size()) };
+    // The largest sphere centred on the axis at s touches the wall where sqrt((s' − s)² + r(s')²)
+    // is smallest (exact on straight pieces; the bent vessels have a constant radius).
+    std::vector<double> fine;
+    for (double s = 0.0; s <= start; s += 0.05)
+      fine.push_back(tube.radiusAt(s));
     for (std::size_t i = 0; i < points.size(); ++i)
     {
       vessel.axis.row(i) = points[i].transpose();
       vessel.radiusMm[i] = radii[i];
+      const double si = abscissa[i];
+      double inscribed = radii[i];
+      for (std::size_t j = 0; j < fine.size(); ++j)
+        inscribed = std::min(inscribed, std::hypot(0.05 * double(j) - si, fine[j]));
+      vessel.inscribedRadiusMm[i] = inscribed;
     }
     truth.vessels.push_back(vessel);
   }

@@ -79,12 +79,15 @@ enum PhantomLabel : unsigned char
 };
 
 /// One vessel's analytic centerline, sampled every 1 mm from its start (points LPS mm, n×3) with
-/// the lumen radius there (mm).
+/// the lumen radius of the cross-section there (mm) and the radius of the largest sphere centred
+/// there that fits in the vessel alone (mm; smaller than the cross-section's on the flanks of the
+/// sac, where the wall slopes toward the centre).
 struct PhantomVessel
 {
   std::string name;
   Points axis;
   Eigen::VectorXd radiusMm;
+  Eigen::VectorXd inscribedRadiusMm;
 };
 
 struct PhantomLandmark

@@ -23,6 +23,10 @@ TEST(StentGraftSimulationXml, Defaults_EqualRegionGrowingParams)
   EXPECT_EQ(fromXml.seedMinimumHu, defaults.seedMinimumHu);
   EXPECT_EQ(fromXml.leakOpeningRadiusMm, defaults.leakOpeningRadiusMm);
   EXPECT_EQ(fromXml.maximumLumenVolumeMl, defaults.maximumLumenVolumeMl);
+  EXPECT_EQ(MakeSkeletonGraphParams(spurLengthRatio).spurLengthRatio, SkeletonGraphParams{}.spurLengthRatio);
+  const CenterlineParams centerlines = MakeCenterlineParams(centerlineStepMm, centerlineSmoothingMm);
+  EXPECT_EQ(centerlines.stepMm, CenterlineParams{}.stepMm);
+  EXPECT_EQ(centerlines.smoothingMm, CenterlineParams{}.smoothingMm);
   EXPECT_TRUE(seed.empty()); // required: no default point
   EXPECT_EQ(std::string(XMLModuleDescription).rfind("<?xml ", 0), 0u);
 }

@@ -1,0 +1,60 @@
+/// \file Centerlines.h
+/// The vessel centerlines of the aorto-iliac tree (STYLE.md B2: CenterlineTree).
+///
+/// Every point is LPS mm; "right" and "left" are the patient's (right = −x in LPS).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "Types.h"
+
+namespace sgp
+{
+
+/// One vessel's centerline, from its start (the proximal end, or the branching point) on.
+struct Centerline
+{
+  std::string name;           ///< aorta, rightIliac, leftIliac, rightRenal, …
+  Points points;              ///< n×3, LPS mm
+  Eigen::VectorXd radiusMm;   ///< n, inscribed-sphere radius, mm
+  Eigen::VectorXd abscissaMm; ///< n, arc length from the first point, mm
+
+  Eigen::Index Size() const { return points.rows(); }
+  double LengthMm() const { return Size() ? abscissaMm[Size() - 1] : 0.0; }
+};
+
+/// A named point: a bifurcation or an ostium on a centerline.
+struct Landmark
+{
+  std::string name;
+  Point3 lps;
+};
+
+/// The labelled Y and its side branches.
+///  - aorta: from its top in the volume down to the aortic bifurcation;
+///  - rightIliac, leftIliac: from the aortic bifurcation through the common and external iliac
+///    arteries to their distal ends;
+///  - side branches: rightRenal, leftRenal, superiorMesenteric, coeliac, rightInternalIliac,
+///    leftInternalIliac, ascendingAorta, and numbered others (aorticBranch1, rightIliacBranch1, …);
+///  - landmarks: aorticBifurcation, rightIliacBifurcation, leftIliacBifurcation (internal iliac
+///    origins), rightRenalOstium, leftRenalOstium, superiorMesentericOstium, coeliacOstium — each
+///    the branching point on the parent vessel's centerline.
+struct CenterlineTree
+{
+  Centerline aorta;
+  Centerline rightIliac;
+  Centerline leftIliac;
+  std::vector<Centerline> sideBranches;
+  std::vector<Landmark> landmarks;
+
+  /// The vessel called `name` (main or side branch), or nullptr.
+  const Centerline* FindVessel(const std::string& name) const;
+  /// The landmark called `name`, or nullptr.
+  const Landmark* FindLandmark(const std::string& name) const;
+};
+
+/// Builds a Centerline from points (n×3) and radii, computing the abscissa.
+Centerline MakeCenterline(const std::string& name, const std::vector<Point3>& points, const std::vector<double>& radii);
+
+} // namespace sgp

@@ -1,0 +1,92 @@
+#include "DistanceInsideMask.h"
+
+#include <cmath>
+#include <limits>
+#include <queue>
+
+namespace sgp
+{
+
+namespace
+{
+
+struct Candidate
+{
+  float distance;
+  long voxel;
+  bool operator>(const Candidate& other) const { return distance > other.distance; }
+};
+
+} // namespace
+
+DistanceField DistanceInsideMask(const MaskGrid& mask, const std::array<double, 3>& spacingMm)
+{
+  const float infinity = std::numeric_limits<float>::max();
+  DistanceField field;
+  field.distanceMm.assign(mask.voxels.size(), 0.0f);
+  field.nearestBackground.assign(mask.voxels.size(), { 0, 0, 0 });
+  std::vector<float>& distance = field.distanceMm;
+  std::vector<std::array<int, 3>>& site = field.nearestBackground;
+  std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> queue;
+  const auto length = [&](const std::array<long, 3>& a, const std::array<int, 3>& b) {
+    const double x = (a[0] - b[0]) * spacingMm[0], y = (a[1] - b[1]) * spacingMm[1], z = (a[2] - b[2]) * spacingMm[2];
+    return static_cast<float>(std::sqrt(x * x + y * y + z * z));
+  };
+  const auto isBackground = [&](long i, long j, long k) {
+    return i < 0 || j < 0 || k < 0 || i >= mask.size[0] || j >= mask.size[1] || k >= mask.size[2] ||
+           !mask.voxels[mask.Flat(i, j, k)];
+  };
+
+  for (long flat = 0; flat < mask.Count(); ++flat)
+  {
+    if (!mask.voxels[flat])
+      continue;
+    distance[flat] = infinity;
+    const auto p = mask.Ijk(flat);
+    for (int dk = -1; dk <= 1; ++dk)
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di)
+        {
+          const std::array<long, 3> q{ p[0] + di, p[1] + dj, p[2] + dk };
+          if (isBackground(q[0], q[1], q[2]))
+          {
+            const float d = length(p, { int(q[0]), int(q[1]), int(q[2]) });
+            if (d < distance[flat])
+            {
+              distance[flat] = d;
+              site[flat] = { int(q[0]), int(q[1]), int(q[2]) };
+            }
+          }
+        }
+    if (distance[flat] < infinity)
+      queue.push({ distance[flat], flat });
+  }
+
+  while (!queue.empty())
+  {
+    const Candidate c = queue.top();
+    queue.pop();
+    if (c.distance > distance[c.voxel])
+      continue;
+    const auto p = mask.Ijk(c.voxel);
+    for (int dk = -1; dk <= 1; ++dk)
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di)
+        {
+          const std::array<long, 3> q{ p[0] + di, p[1] + dj, p[2] + dk };
+          if (isBackground(q[0], q[1], q[2]))
+            continue;
+          const long n = mask.Flat(q[0], q[1], q[2]);
+          const float d = length(q, site[c.voxel]);
+          if (d < distance[n])
+          {
+            distance[n] = d;
+            site[n] = site[c.voxel];
+            queue.push({ d, n });
+          }
+        }
+  }
+  return field;
+}
+
+} // namespace sgp

@@ -1,0 +1,27 @@
+/// \file WriteCenterlines.h
+/// Writes the centerline tree for 3D Slicer: a model of polylines and a markups file of landmarks.
+///
+/// WriteCenterlines: one polyline cell per vessel (aorta, rightIliac, leftIliac, then the side
+/// branches), cell data string array `Name`, point data `Radius` (mm, inscribed sphere) and
+/// `Abscissa` (mm from the vessel's start), points in LPS mm, written by WriteModelLps (so the
+/// file carries `SPACE` = `LPS`). Format from the extension: .vtp or .vtk.
+///
+/// WriteLandmarks: a Slicer markups JSON file (`.mrk.json`, schema v1.0.3), one Fiducial node
+/// whose control points are the landmarks, labelled by name, `coordinateSystem` LPS. Slicer loads
+/// it as a point list with named points; a pointfile parameter declares it
+/// `coordinateSystem="lps"`.
+///
+/// \throws InputError naming the path when it cannot be written.
+#pragma once
+
+#include <string>
+
+#include "../Centerlines.h"
+
+namespace sgp
+{
+
+void WriteCenterlines(const CenterlineTree& tree, const std::string& path);
+void WriteLandmarks(const CenterlineTree& tree, const std::string& path);
+
+} // namespace sgp
