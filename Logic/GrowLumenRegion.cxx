@@ -354,6 +354,10 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
     accept[flat] = hu[flat] >= result.edgeHu && hu[flat] <= result.upperHu;
   }
   GrowConstrained(lumen, accept, refineSteps);
+  // Noise leaves single-voxel pits in the boundary (a voxel just inside the wall drawn below the
+  // edge level); the inscribed-sphere radius of the centerlines is the distance to the nearest of
+  // them, so they are filled: a background voxel with 5 or 6 lumen faces becomes lumen.
+  FillSurfacePits(lumen, 5);
   FillHoles(lumen);
 
   result.volumeMl = lumen.CountForeground() * voxelMl;

@@ -23,7 +23,8 @@
 ///     surrounding tissue (median HU `tissueDepthMm` outside the region, beyond the blur of the edge): neighbours within
 ///     `refineDistanceMm` with HU in [edge, upper] are added; this undoes the conservative lower
 ///     threshold without reaching into darker tissue.
-///  6. **Hole filling:** background cavities not connected to the outside become lumen.
+///  6. **Pits and holes:** single background voxels with five or six lumen faces (noise pits in the
+///     boundary) and background cavities not connected to the outside become lumen.
 ///
 /// Inputs: `ct` in HU on any grid (spacing, origin and direction are honoured); `seedLps` in LPS mm.
 /// Output: a LabelImage on the exact grid of `ct`, 1 = lumen, 0 = background; the window used;

@@ -219,6 +219,27 @@ void FillHoles(MaskGrid& mask)
   }
 }
 
+void FillSurfacePits(MaskGrid& mask, int minimumFaceNeighbours)
+{
+  std::vector<long> pits;
+  for (long flat = 0; flat < mask.Count(); ++flat)
+  {
+    if (mask.voxels[flat])
+      continue;
+    const std::array<long, 3> ijk = mask.Ijk(flat);
+    int neighbours = 0;
+    for (const FaceStep& step : faceSteps)
+    {
+      const long n = FaceNeighbour(mask, ijk, step);
+      neighbours += n >= 0 && mask.voxels[n];
+    }
+    if (neighbours >= minimumFaceNeighbours)
+      pits.push_back(flat);
+  }
+  for (const long flat : pits)
+    mask.voxels[flat] = 1;
+}
+
 void GrowConstrained(MaskGrid& mask, const std::vector<bool>& accept, int steps)
 {
   std::vector<long> front;

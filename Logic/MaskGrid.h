@@ -62,6 +62,10 @@ ComponentSizes MeasureComponents(const MaskGrid& mask);
 /// through background (cavities inside the lumen).
 void FillHoles(MaskGrid& mask);
 
+/// Sets to foreground every background voxel with at least `minimumFaceNeighbours` of its six
+/// face neighbours in the foreground (one pass): single-voxel pits that noise leaves in a surface.
+void FillSurfacePits(MaskGrid& mask, int minimumFaceNeighbours);
+
 /// Grows `mask` by up to `steps` 6-neighbour layers into voxels where `accept[flat]` is true.
 void GrowConstrained(MaskGrid& mask, const std::vector<bool>& accept, int steps);
 
