@@ -66,7 +66,7 @@ struct RegionGrowingParams
   double upperHu = 600.0;              ///< Manual window, HU; in [-1024, 3071]
   double windowSigmas = 3.0;           ///< Auto half-width below the median, in σ; in [1, 10]
   double seedMinimumHu = 150.0;        ///< lumen test at the seed, HU; in [-1024, 3071]
-  double leakOpeningRadiusMm = 1.5;    ///< opening ball radius, mm; 0 disables; in [0, 5]
+  double leakOpeningRadiusMm = 1.0;    ///< opening ball radius, mm; 0 disables; in [0, 5]
   double maximumLumenVolumeMl = 1500.0; ///< larger lumen = leak, mL; in [1, 20000]
 
   double seedNeighbourhoodRadiusMm = 2.5; ///< ball for the seed statistics, mm

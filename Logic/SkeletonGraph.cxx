@@ -83,7 +83,7 @@ struct WorkGraph
     return !spurs.empty();
   }
 
-  /// Joins the two edges of every node of degree 2 (not a self-loop); returns whether any.
+  /// Joins the two edges of every node of degree 2 (unless one is a loop); returns whether any.
   bool DissolveDegreeTwo()
   {
     bool changed = false;
@@ -92,7 +92,8 @@ struct WorkGraph
       if (nodeRemoved[n] || graph.Degree(n) != 2)
         continue;
       const int e1 = graph.nodes[n].edges[0], e2 = graph.nodes[n].edges[1];
-      if (e1 == e2)
+      const auto selfLoop = [&](int e) { return graph.edges[e].a == graph.edges[e].b; };
+      if (e1 == e2 || selfLoop(e1) || selfLoop(e2)) // a loop's one junction stays a node
         continue;
       const int a = graph.Other(e1, n), b = graph.Other(e2, n);
       std::vector<Point3> points = PointsFrom(graph, e1, a);
