@@ -247,11 +247,20 @@ std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph, const Cent
         for (const Branch& left : branches)
         {
           const bool lower = right.direction.z() < -0.2 && left.direction.z() < -0.2;
-          const bool sides = right.direction.x() < -0.15 && left.direction.x() > 0.15;
-          const bool long_ = right.length >= params.minimumBranchLengthMm && left.length >= params.minimumBranchLengthMm;
+          // Toward opposite sides of each other: the aorta may run obliquely, so the two
+          // directions are compared with each other rather than with the x axis.
+          const bool sides = left.direction.x() - right.direction.x() > 0.3;
+          const bool long_ = right.length >= params.minimumIliacLengthMm && left.length >= params.minimumIliacLengthMm;
+          const auto descends = [&](int edge) {
+            const VesselPath path = FollowVessel(graph, n, edge, {}, params.directionReachMm);
+            return path.points.back().z() <= graph.nodes[n].position.z() - params.minimumIliacDescentMm;
+          };
+          // The iliacs are narrower than the aorta, but not much: this also rejects the arch in
+          // a chest scan, whose two limbs go down under a narrow supra-aortic branch.
           const double minimum = params.minimumIliacRadiusRatio * up.radius;
-          const bool wide = right.radius >= minimum && left.radius >= minimum;
-          if (lower && sides && long_ && wide)
+          const bool wide = right.radius >= minimum && left.radius >= minimum &&
+                            up.radius >= 0.8 * std::max(right.radius, left.radius);
+          if (lower && sides && long_ && wide && descends(right.edge) && descends(left.edge))
           {
             const double score = std::min(right.radius, left.radius);
             if (found.empty() || found.back().node != n || found.back().score < score)
@@ -283,6 +292,58 @@ struct SideBranch
   double radius;
 };
 
+/// Names the aorta's side branches by how they leave it (see the header, step 4); unnamed ones
+/// stay empty. `sides` are sorted from the top down; landmarks are appended.
+std::vector<std::string> NameAorticBranches(const SkeletonGraph& graph, const std::vector<SideBranch>& sides,
+                                            const Point3& bifurcation, std::vector<Landmark>& landmarks)
+{
+  std::vector<std::string> names(sides.size());
+  const auto height = [&](const SideBranch& s) { return graph.nodes[s.node].position.z() - bifurcation.z(); };
+  // Anterior: the superior mesenteric and, above it, the coeliac trunk.
+  std::vector<int> anterior;
+  for (int i = 0; i < int(sides.size()); ++i)
+    if (sides[i].direction.y() < -0.6 && height(sides[i]) > 30.0 && height(sides[i]) < 250.0)
+      anterior.push_back(i); // from the top down
+  double renalCeiling = 180.0;
+  if (!anterior.empty())
+  {
+    names[anterior.back()] = "superiorMesenteric";
+    landmarks.push_back({ "superiorMesentericOstium", graph.nodes[sides[anterior.back()].node].position });
+    renalCeiling = std::min(renalCeiling, height(sides[anterior.back()]) + 15.0); // renals leave below it
+  }
+  if (anterior.size() >= 2)
+  {
+    const int coeliac = anterior[anterior.size() - 2];
+    names[coeliac] = "coeliac";
+    landmarks.push_back({ "coeliacOstium", graph.nodes[sides[coeliac].node].position });
+  }
+  // Lateral, between 20 mm above the bifurcation and the superior mesenteric: the widest on each
+  // side is the renal artery, the others accessory renals.
+  for (const char* sideName : { "right", "left" })
+  {
+    const bool right = std::string(sideName) == "right";
+    int widest = -1;
+    for (int i = 0; i < int(sides.size()); ++i)
+    {
+      const Eigen::Vector3d d = sides[i].direction;
+      const bool lateral = std::abs(d.x()) >= 0.5 && std::abs(d.x()) >= std::abs(d.y()) && d.z() <= 0.6 &&
+                           (right ? d.x() < 0 : d.x() > 0);
+      if (names[i].empty() && lateral && height(sides[i]) > 20.0 && height(sides[i]) < renalCeiling)
+      {
+        names[i] = std::string(sideName) + "AccessoryRenal";
+        if (widest < 0 || sides[i].radius > sides[widest].radius)
+          widest = i;
+      }
+    }
+    if (widest >= 0)
+    {
+      names[widest] = std::string(sideName) + "Renal";
+      landmarks.push_back({ std::string(sideName) + "RenalOstium", graph.nodes[sides[widest].node].position });
+    }
+  }
+  return names;
+}
+
 } // namespace
 
 void ValidateCenterlineParams(const CenterlineParams& params)
@@ -291,6 +352,8 @@ void ValidateCenterlineParams(const CenterlineParams& params)
   CheckRange("centerlineSmoothingMm", params.smoothingMm, 0, 20, "mm");
   CheckRange("directionReachMm", params.directionReachMm, 1, 100, "mm");
   CheckRange("minimumBranchLengthMm", params.minimumBranchLengthMm, 1, 500, "mm");
+  CheckRange("minimumIliacLengthMm", params.minimumIliacLengthMm, 1, 500, "mm");
+  CheckRange("minimumIliacDescentMm", params.minimumIliacDescentMm, 0, 500, "mm");
   CheckRange("minimumIliacRadiusRatio", params.minimumIliacRadiusRatio, 0, 1, "");
   CheckRange("internalIliacRadiusRatio", params.internalIliacRadiusRatio, 0, 1, "");
 }
@@ -398,45 +461,7 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
   std::sort(aorticSides.begin(), aorticSides.end(), [&](const SideBranch& a, const SideBranch& b) {
     return graph.nodes[a.node].position.z() > graph.nodes[b.node].position.z();
   });
-  std::vector<std::string> names(aorticSides.size());
-  const auto abdominal = [&](const SideBranch& s) { return graph.nodes[s.node].position.z() - bifurcation.z() < 250.0; };
-  for (const char* sideName : { "right", "left" })
-  {
-    const bool right = std::string(sideName) == "right";
-    int widest = -1;
-    for (int i = 0; i < int(aorticSides.size()); ++i)
-    {
-      const Eigen::Vector3d d = aorticSides[i].direction;
-      const bool lateral = std::abs(d.x()) >= 0.6 && std::abs(d.x()) > std::abs(d.y()) && d.z() < 0.5 &&
-                           (right ? d.x() < 0 : d.x() > 0);
-      if (lateral && abdominal(aorticSides[i]))
-      {
-        names[i] = std::string(sideName) + "AccessoryRenal";
-        if (widest < 0 || aorticSides[i].radius > aorticSides[widest].radius)
-          widest = i;
-      }
-    }
-    if (widest >= 0)
-    {
-      names[widest] = std::string(sideName) + "Renal";
-      tree.landmarks.push_back({ std::string(sideName) + "RenalOstium", graph.nodes[aorticSides[widest].node].position });
-    }
-  }
-  std::vector<int> anterior;
-  for (int i = 0; i < int(aorticSides.size()); ++i)
-    if (names[i].empty() && aorticSides[i].direction.y() < -0.6 && abdominal(aorticSides[i]))
-      anterior.push_back(i); // from the top down
-  if (!anterior.empty())
-  {
-    names[anterior.back()] = "superiorMesenteric";
-    tree.landmarks.push_back({ "superiorMesentericOstium", graph.nodes[aorticSides[anterior.back()].node].position });
-  }
-  if (anterior.size() >= 2)
-  {
-    const int coeliac = anterior[anterior.size() - 2];
-    names[coeliac] = "coeliac";
-    tree.landmarks.push_back({ "coeliacOstium", graph.nodes[aorticSides[coeliac].node].position });
-  }
+  std::vector<std::string> names = NameAorticBranches(graph, aorticSides, bifurcation, tree.landmarks);
   int numbered = 0;
   for (int i = 0; i < int(aorticSides.size()); ++i)
   {

@@ -5,9 +5,16 @@
 ///
 /// 1. **The bifurcation** is the junction with one branch leaving superiorly (direction's z
 ///    component > 0.5, LPS z is superior) and two leaving inferiorly (z < −0.2) toward opposite
-///    sides (x < −0.15 and x > 0.15; the patient's right is −x in LPS, whatever the image's axes),
-///    each branch leading on to at least `minimumBranchLengthMm` of vessel, the two lower ones at
-///    least `minimumIliacRadiusRatio` × the upper one's radius. Branch directions are taken
+///    sides of each other (their x components differ by more than 0.3; the one toward −x is the
+///    patient's right, whatever the image's axes; compared with each other, not with the x axis,
+///    because the aorta may run obliquely),
+///    the upper branch leading on to at least `minimumBranchLengthMm` of vessel and each lower one
+///    to at least `minimumIliacLengthMm` (common, external and internal iliacs together) and,
+///    followed as a vessel (step 2), ending at least `minimumIliacDescentMm` below the junction
+///    (which rules out junctions in the chest whose lower limbs are short branches), the two
+///    lower ones at
+///    least `minimumIliacRadiusRatio` × the upper one's radius and the upper one at least 0.8 ×
+///    the wider lower one's (which rules out the arch of a chest scan). Branch directions are taken
 ///    `directionReachMm` along each branch; radii are the median beyond the junction's own
 ///    radius. Of several such junctions the one with the widest pair of lower branches wins;
 ///    a runner-up within 10 % of it, elsewhere, makes the answer ambiguous.
@@ -19,11 +26,12 @@
 /// 3. **The iliacs** are followed downward the same way; on each, the first side branch at
 ///    least `minimumBranchLengthMm`/2 long and `internalIliacRadiusRatio` × the common iliac's
 ///    radius wide is the internal iliac, and its branching point is the iliac bifurcation.
-/// 4. **Side branches** of the aorta are named by the direction in which they leave: lateral
-///    (|x| ≥ 0.6 and |x| > |y|, z < 0.5) → the widest on each side within 250 mm above the
-///    bifurcation is the renal artery (others: accessory renal); anterior (y < −0.6) within
-///    250 mm above the bifurcation → the lower is the superior mesenteric, a higher one the
-///    coeliac trunk. Others are numbered from the top: aorticBranch1, … ; rightIliacBranch1, ….
+/// 4. **Side branches** of the aorta are named by the direction in which they leave it and their
+///    height above the bifurcation: anterior (y < −0.6) between 30 and 250 mm → the lowest is the
+///    superior mesenteric, the one above it the coeliac trunk; lateral (|x| ≥ 0.5, |x| ≥ |y|,
+///    z ≤ 0.6) between 20 mm and 15 mm above the superior mesenteric (180 mm without it) → the
+///    widest on each side is the renal artery, others accessory renals. Others are numbered from
+///    the top: aorticBranch1, …; on the iliacs rightIliacBranch1, ….
 /// 5. Every vessel is smoothed and resampled (SmoothCenterline).
 ///
 /// Input: a SkeletonGraph (LPS mm). Output: a CenterlineTree with landmarks.
@@ -45,6 +53,8 @@ struct CenterlineParams
   double smoothingMm = 2.0;               ///< Gaussian σ along the vessel, mm; in [0, 20]
   double directionReachMm = 20.0;         ///< how far along a branch its direction is taken, mm
   double minimumBranchLengthMm = 30.0;    ///< vessel beyond a bifurcation branch, mm
+  double minimumIliacLengthMm = 60.0;     ///< vessel beyond each iliac at the bifurcation, mm
+  double minimumIliacDescentMm = 40.0;    ///< how far below the bifurcation each iliac ends, mm
   double minimumIliacRadiusRatio = 0.25;  ///< iliac radius / aortic radius at the bifurcation
   double internalIliacRadiusRatio = 0.35; ///< internal iliac radius / common iliac radius
 };

@@ -169,8 +169,8 @@ TEST(LabelAortoIliacTree, TwoYsFarApart_AmbiguousError)
   for (double x : { -60.0, 60.0 })
   {
     ys.push_back({ Point3(x, 0, 40), Point3(x, 0, 100), 8.0 });
-    ys.push_back({ Point3(x, 0, 40), Point3(x - 25, 0, 0), 5.0 });
-    ys.push_back({ Point3(x, 0, 40), Point3(x + 25, 0, 0), 5.0 });
+    ys.push_back({ Point3(x, 0, 40), Point3(x - 25, 0, -40), 5.0 }); // long enough for iliacs
+    ys.push_back({ Point3(x, 0, 40), Point3(x + 25, 0, -40), 5.0 });
   }
   ys.push_back({ Point3(-60, 0, 100), Point3(60, 0, 100), 8.0 }); // joined at the top: one tree
   const auto mask = testing::PaintCapsules(ys, { 1.0, 1.0, 1.0 });
