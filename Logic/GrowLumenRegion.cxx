@@ -291,7 +291,6 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
     core.voxels[flat] = grown->GetBufferPointer()[image] ? 1 : 0;
     hu[flat] = ct.GetBufferPointer()[image];
   });
-  const long seedFlat = core.Flat((*start)[0] - box.first[0], (*start)[1] - box.first[1], (*start)[2] - box.first[2]);
 
   MaskGrid lumen = core;
   MaskGrid interior = core;
@@ -299,7 +298,23 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
   if (opening)
   {
     const auto ball = BallOffsets(openIjk);
-    interior = ConnectedComponent(Erode(core, ball), seedFlat);
+    const MaskGrid eroded = Erode(core, ball);
+    // The component of the eroded voxel nearest the seed: a noise pit next to the seed voxel may
+    // erode the seed voxel itself.
+    long interiorSeed = -1;
+    for (const auto& index : stats.voxels)
+    {
+      const std::array<long, 3> b{ index[0] - box.first[0], index[1] - box.first[1], index[2] - box.first[2] };
+      if (b[0] < 0 || b[1] < 0 || b[2] < 0 || b[0] >= box.size[0] || b[1] >= box.size[1] || b[2] >= box.size[2])
+        continue;
+      const long flat = core.Flat(b[0], b[1], b[2]);
+      if (eroded.voxels[flat])
+      {
+        interiorSeed = flat;
+        break;
+      }
+    }
+    interior = ConnectedComponent(eroded, interiorSeed);
     if (interior.CountForeground() == 0)
     {
       throw InputError(seedText + " lies in a vessel narrower than the leak-cutting opening (" +

@@ -13,11 +13,15 @@ enhancing kidneys whose truth is known analytically:
 - the phantom generator runs and its return values agree with its JSON truth;
 - StentGraftSimulation exits 0 without an ERROR line, reports progress that
   Slicer can show (values in [0,1], non-decreasing, ending at 1; stages
-  ReadVolume, SegmentLumen, WriteOutputs in order; each start has a matching
+  ReadVolume, SegmentLumen, ThinLumen, ExtractCenterlines, WriteOutputs in order; each
+  start has a matching
   end with a time; nothing tag-like left after Slicer's stripping);
 - its return parameters are well formed and the lumen volume matches the truth;
 - the lumen label map lies on the input grid, overlaps the true lumen with
-  Dice >= 0.95, contains no bone and almost no kidney.
+  Dice >= 0.95, contains no bone and almost no kidney;
+- the centerline model (LPS, SPACE marker, Name/Radius/Abscissa) names the aorta and the
+  iliacs on the patient's sides, and the landmarks file puts the aortic bifurcation where the
+  phantom's is.
 Prints one line per check and `N passed, M failed`; exits 1 on any failure.
 """
 
@@ -165,10 +169,10 @@ def check_progress(stdout):
         check(abs(progress[-1] - 1.0) <= 1e-6, "the last progress value is 1.0", str(progress[-1]))
 
     names = [stage["name"] for stage in info["stages"]]
-    expected = ["ReadVolume", "SegmentLumen", "WriteOutputs"]
+    expected = ["ReadVolume", "SegmentLumen", "ThinLumen", "ExtractCenterlines", "WriteOutputs"]
     positions = [names.index(n) if n in names else -1 for n in expected]
     check(-1 not in positions and positions == sorted(positions),
-          "stages include ReadVolume, SegmentLumen, WriteOutputs in that order", str(names))
+          "stages include " + ", ".join(expected) + " in that order", str(names))
     check(all(stage["comment"] for stage in info["stages"]),
           "every stage has a <filter-comment> (Slicer shows it)", str(info["stages"]))
 
@@ -212,9 +216,15 @@ def check_segmentation(cli_exe, workdir, seed_ras, truth_ml, files):
     if not params:
         return
     lumen_path = os.path.join(workdir, "lumen.nrrd")
-    values = {"inputVolume": files["outputVolume"], "seed": seed_ras, "outputLabelMap": lumen_path}
+    # The extensions Slicer would use: the first of each parameter's fileExtensions.
+    extension = {p["name"]: (p.get("fileExtensions") or "").split(",")[0] for p in params}
+    centerlines_path = os.path.join(workdir, "centerlines" + (extension.get("outputCenterlines") or ".vtp"))
+    landmarks_path = os.path.join(workdir, "landmarks" + (extension.get("outputLandmarks") or ".mrk.json"))
+    values = {"inputVolume": files["outputVolume"], "seed": seed_ras, "outputLabelMap": lumen_path,
+              "outputCenterlines": centerlines_path, "outputLandmarks": landmarks_path}
     result, returned = run_like_slicer(cli_exe, params, values, workdir, "StentGraftSimulation")
     check_progress(result.stdout)
+    check_centerlines(centerlines_path, landmarks_path, files)
 
     numbers = {name: as_float(returned.get(name))
                for name in ("lumenVolumeMl", "lowerHuUsed", "upperHuUsed", "edgeHuUsed")}
@@ -271,6 +281,43 @@ def check_segmentation(cli_exe, workdir, seed_ras, truth_ml, files):
         # 1 %: only the blurred voxels where a renal artery enters the kidney may be taken.
         check(fraction < 0.01, "fewer than 1 % of kidney voxels (label 3) are in the lumen",
               f"{100 * fraction:.2f} %")
+
+
+def check_centerlines(centerlines_path, landmarks_path, files):
+    """The centerline model and the landmarks, as Slicer would load them."""
+    import vtk  # Debian's python3-vtk9
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(centerlines_path)
+    reader.Update()
+    model = reader.GetOutput()
+    space = model.GetFieldData().GetAbstractArray("SPACE")
+    check(space is not None and space.GetValue(0) == "LPS", "centerline model carries SPACE = LPS")
+    names_array = model.GetCellData().GetAbstractArray("Name")
+    names = [names_array.GetValue(i) for i in range(names_array.GetNumberOfValues())] if names_array else []
+    check(all(n in names for n in ("aorta", "rightIliac", "leftIliac")),
+          "centerline model names aorta, rightIliac and leftIliac", str(names))
+    check(model.GetNumberOfCells() == len(names), "one polyline and one Name per vessel",
+          f"{model.GetNumberOfCells()} cells, {len(names)} names")
+    for array in ("Radius", "Abscissa"):
+        check(model.GetPointData().GetArray(array) is not None, f"centerline model has point data {array}")
+    truth = json.load(open(files["outputTruth"]))
+    if "rightIliac" in names and "leftIliac" in names:
+        def last_x(name):
+            ids = model.GetCell(names.index(name)).GetPointIds()
+            return model.GetPoint(ids.GetId(ids.GetNumberOfIds() - 1))[0]
+        # Patient right is -x in LPS; the phantom's external iliacs end 35 mm either side.
+        check(last_x("rightIliac") < -25 and last_x("leftIliac") > 25,
+              "rightIliac ends on the patient's right (-x LPS), leftIliac on the left",
+              f"{last_x('rightIliac'):.1f}, {last_x('leftIliac'):.1f}")
+    markups = json.load(open(landmarks_path))
+    node = markups["markups"][0]
+    check(node["coordinateSystem"] == "LPS", "landmarks are a markups file in LPS")
+    found = {p["label"]: p["position"] for p in node["controlPoints"]}
+    if check("aorticBifurcation" in found, "landmarks include aorticBifurcation", str(list(found))):
+        error = np.linalg.norm(np.array(found["aorticBifurcation"]) - np.array(truth["landmarks"]["aorticBifurcation"]))
+        # 5 mm: the skeleton branches where the inscribed sphere meets the crotch, a few mm above
+        # the point where the analytic axes meet (about half the distal-neck radius).
+        check(error < 5.0, "aorticBifurcation within 5 mm of the phantom's", f"{error:.2f} mm")
 
 
 def main():

@@ -169,6 +169,27 @@ TEST(GrowLumenRegion, BlockBehindOneVoxelBridge_CutAndWarned)
   EXPECT_NEAR(lumen.volumeMl, 60 * 197 / 1000.0, 0.05);
 }
 
+TEST(GrowLumenRegion, DarkVoxelBesideTheSeed_GrowsFromTheNearestInteriorVoxel)
+{
+  // A noise-free tube with one voxel below the window right beside the seed: the opening's erosion
+  // removes the seed voxel, and growing must go on from the interior voxel nearest to it.
+  auto ct = CtImage::New();
+  CtImage::RegionType region;
+  region.SetSize({ { 40, 40, 40 } });
+  ct->SetRegions(region);
+  ct->Allocate();
+  ct->FillBuffer(40);
+  for (long k = 0; k < 40; ++k)
+    for (long j = 0; j < 40; ++j)
+      for (long i = 0; i < 40; ++i)
+        if ((i - 20) * (i - 20) + (j - 20) * (j - 20) <= 64)
+          ct->SetPixel({ { i, j, k } }, 350);
+  ct->SetPixel({ { 21, 20, 20 } }, 100); // beside the seed voxel (20, 20, 20)
+  const LumenSegmentation lumen = GrowLumenRegion(*ct, Point3(20, 20, 20), RegionGrowingParams{});
+  EXPECT_EQ(lumen.mask->GetPixel({ { 21, 20, 20 } }), 1); // the cavity is filled
+  EXPECT_NEAR(lumen.volumeMl, 40 * 197 / 1000.0, 0.01);  // the whole tube, 40 slices of 197 voxels
+}
+
 TEST(GrowLumenRegion, LumenOverVolumeLimit_AlgorithmErrorNamesLimit)
 {
   PhantomParams p;
