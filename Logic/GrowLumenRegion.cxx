@@ -11,6 +11,7 @@
 #include "Errors.h"
 #include "Format.h"
 #include "ImageGeometry.h"
+#include "IndexBox.h"
 #include "MaskGrid.h"
 
 namespace sgp
@@ -84,62 +85,6 @@ SeedStatistics MeasureSeedNeighbourhood(const CtImage& ct, const CtImage::IndexT
   }
   stats.sigmaHu = 1.4826 * Median(values);
   return stats;
-}
-
-/// A box of the image in index space: first voxel and size.
-struct Box
-{
-  std::array<long, 3> first{ 0, 0, 0 };
-  std::array<long, 3> size{ 0, 0, 0 };
-};
-
-/// Bounding box of the non-zero voxels of `mask`, padded by `pad` voxels per axis and clipped to
-/// the image.
-Box ForegroundBox(const LabelImage& mask, const std::array<long, 3>& pad)
-{
-  const auto size = mask.GetLargestPossibleRegion().GetSize();
-  const unsigned char* data = mask.GetBufferPointer();
-  std::array<long, 3> lo{ long(size[0]), long(size[1]), long(size[2]) }, hi{ -1, -1, -1 };
-  long flat = 0;
-  for (long k = 0; k < long(size[2]); ++k)
-  {
-    for (long j = 0; j < long(size[1]); ++j)
-    {
-      for (long i = 0; i < long(size[0]); ++i, ++flat)
-      {
-        if (data[flat])
-        {
-          lo = { std::min(lo[0], i), std::min(lo[1], j), std::min(lo[2], k) };
-          hi = { std::max(hi[0], i), std::max(hi[1], j), std::max(hi[2], k) };
-        }
-      }
-    }
-  }
-  Box box;
-  for (unsigned a = 0; a < 3; ++a)
-  {
-    box.first[a] = std::max(0L, lo[a] - pad[a]);
-    box.size[a] = std::min(long(size[a]) - 1, hi[a] + pad[a]) - box.first[a] + 1;
-  }
-  return box;
-}
-
-/// Calls f(flatInBox, flatInImage) for every voxel of `box`.
-template <typename Function>
-void ForEachInBox(const Box& box, const itk::Size<3>& imageSize, Function f)
-{
-  long flat = 0;
-  for (long k = 0; k < box.size[2]; ++k)
-  {
-    for (long j = 0; j < box.size[1]; ++j)
-    {
-      long image = box.first[0] + long(imageSize[0]) * ((box.first[1] + j) + long(imageSize[1]) * (box.first[2] + k));
-      for (long i = 0; i < box.size[0]; ++i, ++flat, ++image)
-      {
-        f(flat, image);
-      }
-    }
-  }
 }
 
 /// Median HU `depth[axis]` voxels outside the region, sampled along the axes from its boundary.
@@ -283,7 +228,7 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
     tissueDepth[a] = std::max(3L, static_cast<long>(std::ceil(params.tissueDepthMm / spacing[a])));
     pad[a] = openIjk[a] + refineSteps + tissueDepth[a] + 2;
   }
-  const Box box = ForegroundBox(*grown, pad);
+  const IndexBox box = ForegroundBox(*grown, pad);
   const auto imageSize = ct.GetLargestPossibleRegion().GetSize();
   MaskGrid core(box.size);
   std::vector<short> hu(static_cast<std::size_t>(core.Count()));

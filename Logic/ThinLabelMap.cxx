@@ -6,6 +6,7 @@
 #include "DistanceInsideMask.h"
 #include "Errors.h"
 #include "ImageGeometry.h"
+#include "IndexBox.h"
 #include "MaskGrid.h"
 #include "SimplePoint.h"
 
@@ -34,30 +35,20 @@ std::uint32_t Neighbourhood(const MaskGrid& grid, long flat)
 
 Skeleton ThinLabelMap(const LabelImage& mask, const ProgressCallback& progress)
 {
-  const auto size = mask.GetLargestPossibleRegion().GetSize();
-  const unsigned char* data = mask.GetBufferPointer();
-  std::array<long, 3> lo{ long(size[0]), long(size[1]), long(size[2]) }, hi{ -1, -1, -1 };
-  long flat = 0;
-  for (long k = 0; k < long(size[2]); ++k)
-    for (long j = 0; j < long(size[1]); ++j)
-      for (long i = 0; i < long(size[0]); ++i, ++flat)
-        if (data[flat])
-        {
-          lo = { std::min(lo[0], i), std::min(lo[1], j), std::min(lo[2], k) };
-          hi = { std::max(hi[0], i), std::max(hi[1], j), std::max(hi[2], k) };
-        }
-  if (hi[0] < 0)
+  const IndexBox found = ForegroundBox(mask);
+  if (found.Empty())
   {
     throw InputError("The lumen mask is empty (no non-zero voxel); nothing to thin.");
   }
-  // One voxel of background padding on every side, so that every foreground voxel has a full
-  // neighbourhood inside the box.
-  MaskGrid box({ hi[0] - lo[0] + 3, hi[1] - lo[1] + 3, hi[2] - lo[2] + 3 });
-  for (long k = lo[2]; k <= hi[2]; ++k)
-    for (long j = lo[1]; j <= hi[1]; ++j)
-      for (long i = lo[0]; i <= hi[0]; ++i)
-        box.voxels[box.Flat(i - lo[0] + 1, j - lo[1] + 1, k - lo[2] + 1)] =
-          data[i + long(size[0]) * (j + long(size[1]) * k)] ? 1 : 0;
+  // One voxel of background padding on every side (beyond the image's edge too), so that every
+  // foreground voxel has a full neighbourhood inside the box.
+  const std::array<long, 3> lo = found.first;
+  MaskGrid box({ found.size[0] + 2, found.size[1] + 2, found.size[2] + 2 });
+  ForEachInBox(found, mask.GetLargestPossibleRegion().GetSize(), [&](long flat, long image) {
+    const long i = flat % found.size[0], j = (flat / found.size[0]) % found.size[1];
+    const long k = flat / (found.size[0] * found.size[1]);
+    box.voxels[box.Flat(i + 1, j + 1, k + 1)] = mask.GetBufferPointer()[image] ? 1 : 0;
+  });
   ReportProgress(progress, 0.05, "Distance map");
   const auto spacing = mask.GetSpacing();
   const std::array<double, 3> spacingMm{ spacing[0], spacing[1], spacing[2] };
