@@ -13,7 +13,8 @@ that the CLI
   no return-parameter file.
 The cases: missing input file, unreadable file, a 2-D image, a seed outside
 the image, a seed in soft tissue, an inverted manual HU window, no seed, a
-non-numeric seed. A positive control through the same harness (valid input
+non-numeric seed, and a scan that stops above the aortic bifurcation with
+centerlines requested (no Y may be made up). A positive control through the same harness (valid input
 exits 0 and leaves lumen.nrrd and ret.params) shows the harness can tell
 success from failure. Prints one line per check and `N passed, M failed`;
 exits 1 on any failure.
@@ -107,12 +108,32 @@ def fresh_dir(path):
     return path
 
 
+def crop_above(volume_path, out_path, z_min_lps):
+    """Writes the slices of an axis-aligned volume whose LPS z is at least z_min_lps."""
+    data, header = sem_rules.read_nrrd(volume_path)
+    origin, directions = np.array(header["origin"], float), np.array(header["directions"], float)
+    z = origin[2] + np.arange(data.shape[0]) * directions[2][2]
+    keep = np.nonzero(z >= z_min_lps)[0]
+    first = int(keep[0])
+    new_origin = origin + first * directions[2]
+    lines = ["NRRD0004", "type: short", "dimension: 3", "space: left-posterior-superior",
+             "sizes: %d %d %d" % (data.shape[2], data.shape[1], len(keep)),
+             "space directions: " + " ".join("(%r,%r,%r)" % tuple(d) for d in directions),
+             "kinds: domain domain domain", "endian: little", "encoding: raw",
+             "space origin: (%r,%r,%r)" % tuple(new_origin)]
+    with open(out_path, "wb") as handle:
+        handle.write(("\n".join(lines) + "\n\n").encode())
+        handle.write(np.ascontiguousarray(data[first:first + len(keep)], dtype="<i2").tobytes())
+    return out_path
+
+
 def seed_text(ras):
     return ",".join("%g" % v for v in ras)
 
 
 def run_cli(cli, outdir, input_path, extra):
     """The CLI with Slicer's argument order: return file, flags, outputs, positional input."""
+    extra = [a.replace("{outdir}", outdir) for a in extra]  # outputs requested inside the case folder
     argv = [cli, "--returnparameterfile", os.path.join(outdir, "ret.params"), *extra,
             "--outputLabelMap", os.path.join(outdir, "lumen.nrrd"), input_path]
     print(f"RUN: {' '.join(argv)}")
@@ -195,6 +216,14 @@ def main():
     bad_case(cli, workdir, "no-seed", volume, [], ["seed"], ignore_case=True)
 
     bad_case(cli, workdir, "seed-not-numeric", volume, ["--seed", "a,b,c"], ["a,b,c"])
+
+    # A scan that stops above the aortic bifurcation: the lumen is fine, but there is no Y to
+    # label, and the run must say so rather than make one up, and leave no output at all.
+    cropped = crop_above(volume, os.path.join(workdir, "above-bifurcation.nrrd"), z_min_lps=15.0)
+    bad_case(cli, workdir, "no-bifurcation", cropped,
+             valid_seed + ["--outputCenterlines", "{outdir}/centerlines.vtp",
+                           "--outputLandmarks", "{outdir}/landmarks.mrk.json"],
+             ["No aortic bifurcation", "end points"])
 
     passed = sum(results)
     failed = len(results) - passed
