@@ -19,7 +19,8 @@ struct Candidate
 
 } // namespace
 
-DistanceField DistanceInsideMask(const MaskGrid& mask, const std::array<double, 3>& spacingMm)
+DistanceField DistanceInsideMask(const MaskGrid& mask, const std::array<double, 3>& spacingMm,
+                                 bool outsideIsBackground, float maximumDistanceMm)
 {
   const float infinity = std::numeric_limits<float>::max();
   DistanceField field;
@@ -32,9 +33,11 @@ DistanceField DistanceInsideMask(const MaskGrid& mask, const std::array<double, 
     const double x = (a[0] - b[0]) * spacingMm[0], y = (a[1] - b[1]) * spacingMm[1], z = (a[2] - b[2]) * spacingMm[2];
     return static_cast<float>(std::sqrt(x * x + y * y + z * z));
   };
+  const auto outside = [&](long i, long j, long k) {
+    return i < 0 || j < 0 || k < 0 || i >= mask.size[0] || j >= mask.size[1] || k >= mask.size[2];
+  };
   const auto isBackground = [&](long i, long j, long k) {
-    return i < 0 || j < 0 || k < 0 || i >= mask.size[0] || j >= mask.size[1] || k >= mask.size[2] ||
-           !mask.voxels[mask.Flat(i, j, k)];
+    return outside(i, j, k) ? outsideIsBackground : !mask.voxels[mask.Flat(i, j, k)];
   };
 
   for (long flat = 0; flat < mask.Count(); ++flat)
@@ -74,11 +77,11 @@ DistanceField DistanceInsideMask(const MaskGrid& mask, const std::array<double, 
         for (int di = -1; di <= 1; ++di)
         {
           const std::array<long, 3> q{ p[0] + di, p[1] + dj, p[2] + dk };
-          if (isBackground(q[0], q[1], q[2]))
+          if (outside(q[0], q[1], q[2]) || isBackground(q[0], q[1], q[2]))
             continue;
           const long n = mask.Flat(q[0], q[1], q[2]);
           const float d = length(q, site[c.voxel]);
-          if (d < distance[n])
+          if (d < distance[n] && d <= maximumDistanceMm)
           {
             distance[n] = d;
             site[n] = site[c.voxel];
@@ -86,6 +89,9 @@ DistanceField DistanceInsideMask(const MaskGrid& mask, const std::array<double, 
           }
         }
   }
+  for (float& d : distance)
+    if (d == infinity)
+      d = maximumDistanceMm; // beyond the band, or no background at all
   return field;
 }
 
