@@ -15,6 +15,7 @@
 #include "IO/ReadCtImage.h"
 #include "IO/WriteImage.h"
 #include "IO/WriteReturnParameters.h"
+#include "IO/WriteStentModel.h"
 #include "SlicerProgress.h"
 #include "StentGraftSimulationCLP.h"
 #include "StentGraftSimulationParameters.h"
@@ -46,12 +47,18 @@ int main(int argc, char* argv[])
       thresholdMode, lowerHu, upperHu, windowSigmas, seedMinimumHu, leakOpeningRadiusMm, maximumLumenVolumeMl);
     const SkeletonGraphParams graphParams = MakeSkeletonGraphParams(spurLengthRatio);
     const CenterlineParams centerlineParams = MakeCenterlineParams(centerlineStepMm, centerlineSmoothingMm);
-    ValidateParameters(inputVolume, seed, growParams, graphParams, centerlineParams);
-    const bool wantCenterlines = !outputCenterlines.empty() || !outputLandmarks.empty();
+    const StentMeshParams meshParams = MakeStentMeshParams(verticesPerRing, ringSpacingMm, startRadiusMm, proximalStartMm);
+    const ActiveContourParams acmParams = MakeActiveContourParams(
+      acmMode, measureStiffnessWeights, measureBalloonRadiusMm, measureBalloonPressure, stentDiametersMm,
+      stentStiffnessWeights, stentBalloonPressure, acmTau, wallWeight, wallSofteningMm, acmMaxIterations, acmToleranceMm);
+    ValidateParameters(inputVolume, seed, growParams, graphParams, centerlineParams, meshParams, acmParams);
+    const bool wantStent = !outputStentModel.empty() || !outputInitialStentModel.empty();
+    const bool wantCenterlines = wantStent || !outputCenterlines.empty() || !outputLandmarks.empty();
     SlicerProgress progress(std::cout, { { "ReadVolume", 2.0 },
                                          { "SegmentLumen", 4.0 },
                                          { "ThinLumen", 2.0 },
                                          { "ExtractCenterlines", 1.0 },
+                                         { "FitStent", 2.0 },
                                          { "WriteOutputs", 1.0 } });
 
     progress.Begin("ReadVolume", "Reading the CT volume");
@@ -78,6 +85,25 @@ int main(int argc, char* argv[])
       centerlines = LabelAortoIliacTree(graph, centerlineParams);
       AssignInscribedRadii(centerlines, skeleton);
     }
+    StentMesh mesh;
+    ActiveContourResult fit;
+    Eigen::VectorXd initialRadius, initialWallDistance;
+    if (wantStent)
+    {
+      progress.Begin("FitStent", "Fitting the bifurcated stent surface (active contour)");
+      mesh = BuildStentMesh(centerlines, meshParams);
+      const WallDistanceField wall = WallDistanceField::FromLumen(*lumen.mask);
+      initialRadius = Eigen::VectorXd::Constant(mesh.V.rows(), meshParams.startRadiusMm);
+      initialWallDistance.resize(mesh.V.rows());
+      for (Eigen::Index i = 0; i < mesh.V.rows(); ++i)
+        initialWallDistance[i] = wall.Sample(mesh.V.row(i).transpose());
+      fit = FitActiveContour(mesh, wall, acmParams, progress.Callback());
+      acmIterations = fit.iterations;
+      acmConverged = fit.converged;
+      if (!fit.converged)
+        std::cerr << "WARNING: The active contour did not converge within " << fit.iterations
+                  << " iterations (acmMaxIterations); the surface written is the last one." << std::endl;
+    }
 
     progress.Begin("WriteOutputs", "Writing the outputs");
     OutputTransaction outputs;
@@ -93,12 +119,22 @@ int main(int argc, char* argv[])
     {
       WriteLandmarks(centerlines, outputs.Stage(outputLandmarks));
     }
+    if (!outputInitialStentModel.empty())
+    {
+      WriteStentModel(mesh, mesh.V, initialRadius, initialWallDistance, outputs.Stage(outputInitialStentModel));
+    }
+    if (!outputStentModel.empty())
+    {
+      WriteStentModel(mesh, fit.V, fit.radiusMm, fit.wallDistanceMm, outputs.Stage(outputStentModel));
+    }
     if (!returnParameterFile.empty())
     {
       WriteReturnParameters({ { "lumenVolumeMl", FormatReturnValue(lumenVolumeMl) },
                               { "lowerHuUsed", FormatReturnValue(lowerHuUsed) },
                               { "upperHuUsed", FormatReturnValue(upperHuUsed) },
-                              { "edgeHuUsed", FormatReturnValue(edgeHuUsed) } },
+                              { "edgeHuUsed", FormatReturnValue(edgeHuUsed) },
+                              { "acmIterations", std::to_string(acmIterations) },
+                              { "acmConverged", acmConverged ? "true" : "false" } },
                             outputs.Stage(returnParameterFile));
     }
     outputs.Commit();
@@ -115,6 +151,12 @@ int main(int argc, char* argv[])
       for (const Centerline& c : centerlines.sideBranches)
         std::cout << " " << c.name;
       std::cout << std::endl;
+    }
+    if (wantStent)
+    {
+      std::cout << "Stent surface: " << mesh.V.rows() << " vertices, " << acmMode << " mode, "
+                << (fit.converged ? "converged" : "not converged") << " after " << fit.iterations << " iterations"
+                << std::endl;
     }
     return EXIT_SUCCESS;
   }

@@ -1,5 +1,6 @@
 #include "StentGraftSimulationParameters.h"
 
+#include "CheckRange.h"
 #include "Errors.h"
 
 namespace sgp
@@ -59,11 +60,80 @@ CenterlineParams MakeCenterlineParams(double centerlineStepMm, double centerline
   return params;
 }
 
+StentMeshParams MakeStentMeshParams(int verticesPerRing, double ringSpacingMm, double startRadiusMm,
+                                    double proximalStartMm)
+{
+  StentMeshParams params;
+  params.verticesPerRing = verticesPerRing;
+  params.ringSpacingMm = ringSpacingMm;
+  params.startRadiusMm = startRadiusMm;
+  params.proximalAbscissaMm = proximalStartMm;
+  return params;
+}
+
+namespace
+{
+
+StiffnessWeights WeightsFrom(const std::vector<double>& w, const char* name)
+{
+  if (w.size() != 5)
+    throw InputError(std::string(name) + " has " + std::to_string(w.size()) + " values; expected five (w1 to w5).");
+  return { w[0], w[1], w[2], w[3], w[4] };
+}
+
+} // namespace
+
+ActiveContourParams MakeActiveContourParams(const std::string& acmMode,
+                                            const std::vector<double>& measureStiffnessWeights,
+                                            double measureBalloonRadiusMm,
+                                            double measureBalloonPressure,
+                                            const std::vector<double>& stentDiametersMm,
+                                            const std::vector<double>& stentStiffnessWeights,
+                                            double stentBalloonPressure,
+                                            double acmTau,
+                                            double wallWeight,
+                                            double wallSofteningMm,
+                                            int acmMaxIterations,
+                                            double acmToleranceMm)
+{
+  ActiveContourParams params;
+  if (acmMode == "measure")
+  {
+    params = ActiveContourParams::Measure();
+    params.weights = WeightsFrom(measureStiffnessWeights, "measureStiffnessWeights");
+    params.balloonRadiusMm = { measureBalloonRadiusMm, measureBalloonRadiusMm, measureBalloonRadiusMm };
+    params.balloonPressure = measureBalloonPressure;
+  }
+  else if (acmMode == "simulate")
+  {
+    if (stentDiametersMm.size() != 3)
+      throw InputError("stentDiametersMm has " + std::to_string(stentDiametersMm.size()) +
+                       " values; expected three (trunk, right leg, left leg).");
+    for (double d : stentDiametersMm)
+      CheckRange("stentDiametersMm", d, 2.0, 400.0, "mm");
+    params = ActiveContourParams::Simulate({ stentDiametersMm[0], stentDiametersMm[1], stentDiametersMm[2] });
+    params.weights = WeightsFrom(stentStiffnessWeights, "stentStiffnessWeights");
+    params.balloonPressure = stentBalloonPressure;
+  }
+  else
+  {
+    throw InputError("acmMode is '" + acmMode + "'; expected measure or simulate.");
+  }
+  params.tau = acmTau;
+  params.wallWeight = wallWeight;
+  params.wallSofteningMm = wallSofteningMm;
+  params.maxIterations = acmMaxIterations;
+  params.toleranceMm = acmToleranceMm;
+  return params;
+}
+
 void ValidateParameters(const std::string& inputVolume,
                         const std::vector<float>& seed,
                         const RegionGrowingParams& params,
                         const SkeletonGraphParams& graphParams,
-                        const CenterlineParams& centerlineParams)
+                        const CenterlineParams& centerlineParams,
+                        const StentMeshParams& meshParams,
+                        const ActiveContourParams& acmParams)
 {
   if (inputVolume.empty())
   {
@@ -77,6 +147,11 @@ void ValidateParameters(const std::string& inputVolume,
   ValidateRegionGrowingParams(params);
   ValidateSkeletonGraphParams(graphParams);
   ValidateCenterlineParams(centerlineParams);
+  ValidateStentMeshParams(meshParams);
+  ValidateActiveContourParams(acmParams);
+  for (double w : { acmParams.weights.w1, acmParams.weights.w2, acmParams.weights.w3, acmParams.weights.w4,
+                    acmParams.weights.w5 })
+    CheckRange("a stiffness weight", w, 0.0, 1e6, "");
 }
 
 } // namespace sgp

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "ActiveContour.h"
 #include "GrowLumenRegion.h"
 #include "LabelAortoIliacTree.h"
 #include "SkeletonGraph.h"
@@ -33,12 +34,35 @@ RegionGrowingParams MakeRegionGrowingParams(const std::string& thresholdMode,
 SkeletonGraphParams MakeSkeletonGraphParams(double spurLengthRatio);
 CenterlineParams MakeCenterlineParams(double centerlineStepMm, double centerlineSmoothingMm);
 
+/// Copies the stent-mesh parameters.
+StentMeshParams MakeStentMeshParams(int verticesPerRing, double ringSpacingMm, double startRadiusMm,
+                                    double proximalStartMm);
+
+/// The active contour's parameters for `acmMode` ("measure" or "simulate"): the mode's weights,
+/// balloon radius and pressure, and the shared step, wall and stopping parameters.
+/// \throws InputError for a weight vector that is not five values, diameters not three values,
+///         or another mode.
+ActiveContourParams MakeActiveContourParams(const std::string& acmMode,
+                                            const std::vector<double>& measureStiffnessWeights,
+                                            double measureBalloonRadiusMm,
+                                            double measureBalloonPressure,
+                                            const std::vector<double>& stentDiametersMm,
+                                            const std::vector<double>& stentStiffnessWeights,
+                                            double stentBalloonPressure,
+                                            double acmTau,
+                                            double wallWeight,
+                                            double wallSofteningMm,
+                                            int acmMaxIterations,
+                                            double acmToleranceMm);
+
 /// Checks the inputs a run needs: an input volume, a seed of three numbers, and parameters in
 /// range. \throws InputError naming the value and what was expected.
 void ValidateParameters(const std::string& inputVolume,
                         const std::vector<float>& seed,
                         const RegionGrowingParams& params,
                         const SkeletonGraphParams& graphParams = {},
-                        const CenterlineParams& centerlineParams = {});
+                        const CenterlineParams& centerlineParams = {},
+                        const StentMeshParams& meshParams = {},
+                        const ActiveContourParams& acmParams = ActiveContourParams::Measure());
 
 } // namespace sgp

@@ -117,7 +117,7 @@ void ValidateStentMeshParams(const StentMeshParams& p)
                      "; expected a multiple of 4 (the junction joins quarter rings).");
   CheckRange("ringSpacingMm", p.ringSpacingMm, 0.5, 20, "mm");
   CheckRange("startRadiusMm", p.startRadiusMm, 0.5, 30, "mm");
-  CheckRange("proximalAbscissaMm", p.proximalAbscissaMm, 0, 1e4, "mm");
+  CheckRange("proximalAbscissaMm", p.proximalAbscissaMm, -1, 1e4, "mm");
   CheckRange("legLengthMm", p.legLengthMm, 0, 1e3, "mm");
 }
 
@@ -129,7 +129,15 @@ StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& p)
   // Ring positions: the trunk measured up from its junction end, the legs down from theirs.
   std::vector<double> trunk;
   const double trunkEnd = tree.aorta.LengthMm() - gap;
-  for (double s = trunkEnd; s >= p.proximalAbscissaMm - 1e-9; s -= p.ringSpacingMm)
+  double proximal = p.proximalAbscissaMm;
+  if (proximal < 0.0)
+  {
+    proximal = 0.0;
+    for (const char* renal : { "rightRenalOstium", "leftRenalOstium" })
+      if (const Landmark* ostium = tree.FindLandmark(renal))
+        proximal = std::max(proximal, AbscissaNearest(tree.aorta, ostium->lps) + 5.0);
+  }
+  for (double s = trunkEnd; s >= proximal - 1e-9; s -= p.ringSpacingMm)
     trunk.insert(trunk.begin(), s);
   std::array<std::vector<double>, 2> legs;
   const Centerline* iliac[2] = { &tree.rightIliac, &tree.leftIliac };
@@ -140,7 +148,7 @@ StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& p)
     if (length <= 0.0)
     {
       const Landmark* origin = tree.FindLandmark(bifurcation[side]);
-      length = origin ? AbscissaNearest(*iliac[side], origin->lps) - gap : 60.0;
+      length = origin ? AbscissaNearest(*iliac[side], origin->lps) - gap - 5.0 : 60.0;
     }
     length = std::min(length, iliac[side]->LengthMm() - gap);
     for (double s = gap; s <= gap + length + 1e-9; s += p.ringSpacingMm)

@@ -11,9 +11,11 @@
 /// j = n/4 is anterior, j = 3n/4 posterior, j = n/2 the right side of the trunk and the lateral
 /// side of each leg.
 ///
-/// The trunk runs from `proximalAbscissaMm` along the aorta down to 3 × startRadiusMm above the
-/// bifurcation; each leg starts 3 × startRadiusMm down its iliac (so the two first leg rings do
-/// not touch) and runs `legLengthMm` (0: to the internal iliac origin, or 60 mm without one).
+/// The trunk runs from `proximalAbscissaMm` along the aorta (by default just below the lowest
+/// renal artery, so that it does not open into the renal ostia; the measurements stage refines
+/// this proximal implantation site) down to 3 × startRadiusMm above the bifurcation; each leg
+/// starts 3 × startRadiusMm down its iliac (so the two first leg rings do not touch) and runs
+/// `legLengthMm` (0: to 5 mm above the internal iliac origin, or 60 mm without one).
 ///
 /// **Connection element.** Stiffness acts along *s-chains* (vertex sequences along the vessel)
 /// and around *rings*. Across the junction the chains continue: the trunk's right half
@@ -50,7 +52,9 @@ struct StentMeshParams
   int verticesPerRing = 16;        ///< n, a multiple of 4 in [8, 256]
   double ringSpacingMm = 4.0;      ///< in [0.5, 20]
   double startRadiusMm = 3.0;      ///< in [0.5, 30]
-  double proximalAbscissaMm = 0.0; ///< where the trunk starts along the aorta, mm; ≥ 0
+  /// Where the trunk starts, as arc length along the aorta from its top, mm (≥ 0); negative: 5 mm
+  /// below the lowest renal ostium landmark, or the top without one.
+  double proximalAbscissaMm = -1.0;
   double legLengthMm = 0.0;        ///< 0 = to the internal iliac origin (60 mm without one)
 };
 

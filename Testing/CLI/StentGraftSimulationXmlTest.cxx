@@ -27,6 +27,30 @@ TEST(StentGraftSimulationXml, Defaults_EqualRegionGrowingParams)
   const CenterlineParams centerlines = MakeCenterlineParams(centerlineStepMm, centerlineSmoothingMm);
   EXPECT_EQ(centerlines.stepMm, CenterlineParams{}.stepMm);
   EXPECT_EQ(centerlines.smoothingMm, CenterlineParams{}.smoothingMm);
+  const StentMeshParams mesh = MakeStentMeshParams(verticesPerRing, ringSpacingMm, startRadiusMm, proximalStartMm);
+  EXPECT_EQ(mesh.verticesPerRing, StentMeshParams{}.verticesPerRing);
+  EXPECT_EQ(mesh.ringSpacingMm, StentMeshParams{}.ringSpacingMm);
+  EXPECT_EQ(mesh.startRadiusMm, StentMeshParams{}.startRadiusMm);
+  EXPECT_EQ(mesh.proximalAbscissaMm, StentMeshParams{}.proximalAbscissaMm);
+  const auto acm = [&](const char* mode) {
+    return MakeActiveContourParams(mode, measureStiffnessWeights, measureBalloonRadiusMm, measureBalloonPressure,
+                                   stentDiametersMm, stentStiffnessWeights, stentBalloonPressure, acmTau, wallWeight,
+                                   wallSofteningMm, acmMaxIterations, acmToleranceMm);
+  };
+  const auto same = [](const ActiveContourParams& a, const ActiveContourParams& b) {
+    EXPECT_EQ(a.weights.w1, b.weights.w1);
+    EXPECT_EQ(a.weights.w3, b.weights.w3);
+    EXPECT_EQ(a.weights.w5, b.weights.w5);
+    EXPECT_EQ(a.balloonPressure, b.balloonPressure);
+    EXPECT_EQ(a.balloonRadiusMm, b.balloonRadiusMm);
+    EXPECT_EQ(a.tau, b.tau);
+    EXPECT_EQ(a.wallWeight, b.wallWeight);
+    EXPECT_EQ(a.wallSofteningMm, b.wallSofteningMm);
+    EXPECT_EQ(a.maxIterations, b.maxIterations);
+    EXPECT_EQ(a.toleranceMm, b.toleranceMm);
+  };
+  same(acm("measure"), ActiveContourParams::Measure());
+  same(acm("simulate"), ActiveContourParams::Simulate({ 24.0, 12.0, 12.0 }));
   EXPECT_TRUE(seed.empty()); // required: no default point
   EXPECT_EQ(std::string(XMLModuleDescription).rfind("<?xml ", 0), 0u);
 }

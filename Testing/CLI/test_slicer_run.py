@@ -169,7 +169,7 @@ def check_progress(stdout):
         check(abs(progress[-1] - 1.0) <= 1e-6, "the last progress value is 1.0", str(progress[-1]))
 
     names = [stage["name"] for stage in info["stages"]]
-    expected = ["ReadVolume", "SegmentLumen", "ThinLumen", "ExtractCenterlines", "WriteOutputs"]
+    expected = ["ReadVolume", "SegmentLumen", "ThinLumen", "ExtractCenterlines", "FitStent", "WriteOutputs"]
     positions = [names.index(n) if n in names else -1 for n in expected]
     check(-1 not in positions and positions == sorted(positions),
           "stages include " + ", ".join(expected) + " in that order", str(names))
@@ -220,11 +220,14 @@ def check_segmentation(cli_exe, workdir, seed_ras, truth_ml, files):
     extension = {p["name"]: (p.get("fileExtensions") or "").split(",")[0] for p in params}
     centerlines_path = os.path.join(workdir, "centerlines" + (extension.get("outputCenterlines") or ".vtp"))
     landmarks_path = os.path.join(workdir, "landmarks" + (extension.get("outputLandmarks") or ".mrk.json"))
+    stent_path = os.path.join(workdir, "stent" + (extension.get("outputStentModel") or ".vtp"))
     values = {"inputVolume": files["outputVolume"], "seed": seed_ras, "outputLabelMap": lumen_path,
-              "outputCenterlines": centerlines_path, "outputLandmarks": landmarks_path}
+              "outputCenterlines": centerlines_path, "outputLandmarks": landmarks_path,
+              "outputStentModel": stent_path}
     result, returned = run_like_slicer(cli_exe, params, values, workdir, "StentGraftSimulation")
     check_progress(result.stdout)
     check_centerlines(centerlines_path, landmarks_path, files)
+    check_stent(stent_path, returned, files)
 
     numbers = {name: as_float(returned.get(name))
                for name in ("lumenVolumeMl", "lowerHuUsed", "upperHuUsed", "edgeHuUsed")}
@@ -318,6 +321,34 @@ def check_centerlines(centerlines_path, landmarks_path, files):
         # 5 mm: the skeleton branches where the inscribed sphere meets the crotch, a few mm above
         # the point where the analytic axes meet (about half the distal-neck radius).
         check(error < 5.0, "aorticBifurcation within 5 mm of the phantom's", f"{error:.2f} mm")
+
+
+def check_stent(stent_path, returned, files):
+    """The fitted stent surface, as Slicer would load it, and the active contour's return values."""
+    import vtk  # Debian's python3-vtk9
+    from vtk.util.numpy_support import vtk_to_numpy
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(stent_path)
+    reader.Update()
+    model = reader.GetOutput()
+    space = model.GetFieldData().GetAbstractArray("SPACE")
+    check(space is not None and space.GetValue(0) == "LPS", "stent model carries SPACE = LPS")
+    arrays = {name: model.GetPointData().GetArray(name) for name in ("Segment", "Ring", "Radius", "WallDistance")}
+    check(all(a is not None for a in arrays.values()), "stent model has point data Segment, Ring, Radius, WallDistance",
+          str([k for k, a in arrays.items() if a is None]))
+    check(model.GetNumberOfPolys() > 0, "stent model is a triangulated surface", str(model.GetNumberOfPolys()))
+    check(returned.get("acmConverged") == "true", "acmConverged = true", str(returned.get("acmConverged")))
+    iterations = returned.get("acmIterations", "")
+    check(iterations.isdigit() and int(iterations) > 0, "acmIterations is a positive integer", iterations)
+    if all(a is not None for a in arrays.values()):
+        segment, radius = vtk_to_numpy(arrays["Segment"]), vtk_to_numpy(arrays["Radius"])
+        check(set(np.unique(segment).tolist()) == {0, 1, 2}, "Segment holds trunk (0), right (1) and left (2) legs")
+        truth = json.load(open(files["outputTruth"]))["sizing"]["maxAneurysmDiameter"] / 2
+        widest = radius[segment == 0].max()
+        # 1.5 mm: vertices sit on the segmented wall (half a voxel from the analytic one), and a
+        # single vertex may lie on the staircase's outer edge.
+        check(abs(widest - truth) < 1.5, "the fitted trunk reaches the sac's widest radius",
+              f"{widest:.2f} vs {truth:.2f} mm")
 
 
 def main():

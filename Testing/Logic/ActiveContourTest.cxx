@@ -125,9 +125,7 @@ TEST(ActiveContour, AneurysmPhantom_SurfaceFollowsTheSacToItsWidest)
   const LabelImage::Pointer lumen =
     GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, RegionGrowingParams{}).mask;
   const CenterlineTree tree = testing::CenterlinesFromMask(*lumen);
-  StentMeshParams mp;
-  mp.proximalAbscissaMm = 20.0;
-  const StentMesh mesh = BuildStentMesh(tree, mp);
+  const StentMesh mesh = BuildStentMesh(tree); // the trunk starts below the lowest renal artery
   const WallDistanceField wall = WallDistanceField::FromLumen(*lumen);
   const ActiveContourResult r = FitActiveContour(mesh, wall, ActiveContourParams::Measure());
   // The widest ring's mean diameter against the sac's 55 mm: within 1 mm (the segmented wall

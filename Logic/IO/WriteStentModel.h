@@ -1,0 +1,19 @@
+/// \file WriteStentModel.h
+/// Writes a stent surface for 3D Slicer (through WriteModelLps: LPS, `SPACE` = `LPS`, .vtp/.vtk):
+/// the triangles of the mesh at vertex positions `V` (#V×3, LPS mm), with point data `Segment`
+/// (0 trunk, 1 right leg, 2 left leg), `Ring`, `Radius` (mm, from the ring's centerline point in
+/// its plane) and `WallDistance` (mm, signed, negative inside the lumen).
+/// \throws InputError naming the path when it cannot be written.
+#pragma once
+
+#include <string>
+
+#include "../StentMesh.h"
+
+namespace sgp
+{
+
+void WriteStentModel(const StentMesh& mesh, const Points& V, const Eigen::VectorXd& radiusMm,
+                     const Eigen::VectorXd& wallDistanceMm, const std::string& path);
+
+} // namespace sgp
