@@ -43,9 +43,10 @@ double EffectiveWallDistance(const StentMesh& mesh, const WallDistanceField& wal
   return phi;
 }
 
-/// F_ext at every vertex (#V×3).
-Points ExternalForce(const StentMesh& mesh, const WallDistanceField& wall, const ActiveContourParams& p,
-                     std::vector<bool>& contact, const Points& V)
+} // namespace
+
+Points ActiveContourForces(const StentMesh& mesh, const WallDistanceField& wall, const ActiveContourParams& p,
+                           std::vector<bool>& contact, const Points& V)
 {
   Points F = Points::Zero(V.rows(), 3);
   for (Eigen::Index i = 0; i < V.rows(); ++i)
@@ -71,6 +72,9 @@ Points ExternalForce(const StentMesh& mesh, const WallDistanceField& wall, const
   }
   return F;
 }
+
+namespace
+{
 
 /// D softened within δ of the wall: φ²/(2δ) for 0 < φ < δ, φ − δ/2 beyond, 0 inside.
 double WallPotential(double phi, double delta)
@@ -157,7 +161,7 @@ ActiveContourResult FitActiveContour(const StentMesh& mesh, const WallDistanceFi
   result.energy.push_back(ActiveContourEnergy(mesh, K, wall, p, contact, V));
   for (int step = 1; step <= p.maxIterations; ++step)
   {
-    const Eigen::MatrixXd b = V + p.tau * Eigen::MatrixXd(ExternalForce(mesh, wall, p, contact, V));
+    const Eigen::MatrixXd b = V + p.tau * Eigen::MatrixXd(ActiveContourForces(mesh, wall, p, contact, V));
     const Eigen::MatrixXd next = solver.solve(b);
     result.maxRelativeResidual =
       std::max(result.maxRelativeResidual, (A * next - b).norm() / std::max(b.norm(), 1e-300));

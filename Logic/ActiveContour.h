@@ -101,6 +101,10 @@ ActiveContourResult FitActiveContour(const StentMesh& mesh,
                                      const ActiveContourParams& params,
                                      const ProgressCallback& progress = {});
 
+/// F_ext(V) (#V×3) as defined above; sets `contact` (#V flags) for vertices past the wall.
+Points ActiveContourForces(const StentMesh& mesh, const WallDistanceField& wall, const ActiveContourParams& params,
+                           std::vector<bool>& contact, const Points& V);
+
 /// E(V) as defined above; `contact` flags the vertices in contact (empty: none).
 double ActiveContourEnergy(const StentMesh& mesh, const SparseMatrix& K, const WallDistanceField& wall,
                            const ActiveContourParams& params, const std::vector<bool>& contact, const Points& V);
