@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <Eigen/SparseCholesky>
 
@@ -153,9 +154,8 @@ ActiveContourResult FitActiveContour(const StentMesh& mesh, const WallDistanceFi
     ++result.factorizations;
   };
   factor(); // once per run: every step below reuses it
-  if (solver.info() != Eigen::Success)
-    throw AlgorithmError("The factorization of I + tau K failed (" + std::to_string(K.rows()) +
-                         " vertices); check the stiffness weights and tau for non-finite values.");
+  if (solver.info() != Eigen::Success) // cannot happen: I + τK is symmetric positive definite
+    throw std::logic_error("ActiveContour: the LDLT factorization of I + tau K failed");
   Eigen::MatrixXd V = mesh.V;
   std::vector<bool> contact(static_cast<std::size_t>(V.rows()), false);
   result.energy.push_back(ActiveContourEnergy(mesh, K, wall, p, contact, V));

@@ -49,7 +49,8 @@
 /// (p_v the vertex's pressure), recorded before the first and after every step. Its negative gradient is −KV + F_ext
 /// up to the tangential part of the wall force left out above, so E need not fall when vertices
 /// press on the wall; where they do not (R inside the lumen), each step lowers it.
-/// Errors: InputError for parameters out of range; AlgorithmError if the factorization fails.
+/// Errors: InputError for parameters out of range. (I + τK is symmetric positive definite for
+/// valid parameters, so its factorization cannot fail.)
 /// Complexity: one sparse factorization (near-linear for these banded meshes) plus O(#V) a step.
 #pragma once
 

@@ -96,6 +96,30 @@ TEST(CliEdge, ValidateParameters_NamesWhatIsMissing)
   EXPECT_THROW(MakeRegionGrowingParams("fuzzy", 0, 1, 3, 150, 1, 100), InputError);
 }
 
+TEST(CliEdge, MakeActiveContourParams_ModeAndCounts)
+{
+  const std::vector<double> five{ 0.1, 0.2, 0.3, 0.4, 0.5 }, three{ 24, 12, 14 };
+  const auto make = [&](const std::string& mode, const std::vector<double>& weights, const std::vector<double>& d) {
+    return MakeActiveContourParams(mode, weights, 60, 0.02, d, weights, 5, 0.15, 5, 1, 100, 0.01);
+  };
+  const ActiveContourParams simulate = make("simulate", five, three);
+  EXPECT_EQ(simulate.balloonRadiusMm, (std::array<double, 3>{ 12, 6, 7 })); // R is half the diameter
+  EXPECT_EQ(simulate.weights.w3, 0.3);
+  EXPECT_EQ(make("measure", five, three).balloonRadiusMm, (std::array<double, 3>{ 60, 60, 60 }));
+  try
+  {
+    make("measure", { 1, 2 }, three);
+    ADD_FAILURE();
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_STREQ(e.what(), "measureStiffnessWeights has 2 values; expected five (w1 to w5).");
+  }
+  EXPECT_THROW(make("simulate", five, { 24, 12 }), InputError);
+  EXPECT_THROW(make("simulate", five, { 24, 12, 1 }), InputError); // a 1 mm leg
+  EXPECT_THROW(make("gentle", five, three), InputError);
+}
+
 TEST(CliEdge, MakePhantomParams_WrongCounts_InputErrorNamesParameter)
 {
   try

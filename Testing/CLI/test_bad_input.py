@@ -13,8 +13,9 @@ that the CLI
   no return-parameter file.
 The cases: missing input file, unreadable file, a 2-D image, a seed outside
 the image, a seed in soft tissue, an inverted manual HU window, no seed, a
-non-numeric seed, and a scan that stops above the aortic bifurcation with
-centerlines requested (no Y may be made up). A positive control through the same harness (valid input
+non-numeric seed, a stent mesh whose rings are not a multiple of 4, two
+stent diameters where three are needed, and a scan that stops above the
+aortic bifurcation with centerlines requested (no Y may be made up). A positive control through the same harness (valid input
 exits 0 and leaves lumen.nrrd and ret.params) shows the harness can tell
 success from failure. Prints one line per check and `N passed, M failed`;
 exits 1 on any failure.
@@ -216,6 +217,12 @@ def main():
     bad_case(cli, workdir, "no-seed", volume, [], ["seed"], ignore_case=True)
 
     bad_case(cli, workdir, "seed-not-numeric", volume, ["--seed", "a,b,c"], ["a,b,c"])
+
+    # Stent-surface parameters are checked before anything is read.
+    bad_case(cli, workdir, "vertices-per-ring", volume, valid_seed + ["--verticesPerRing", "18"],
+             ["verticesPerRing", "18"])
+    bad_case(cli, workdir, "stent-diameters", volume,
+             valid_seed + ["--acmMode", "simulate", "--stentDiametersMm", "24,12"], ["stentDiametersMm", "three"])
 
     # A scan that stops above the aortic bifurcation: the lumen is fine, but there is no Y to
     # label, and the run must say so rather than make one up, and leave no output at all.

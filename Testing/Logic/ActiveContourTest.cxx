@@ -152,6 +152,12 @@ TEST(ActiveContour, ParameterOutOfRange_InputError)
   p.balloonRadiusMm[1] = -3.0;
   EXPECT_THROW(ValidateActiveContourParams(p), InputError);
   EXPECT_THROW(WallDistanceField::FromLumen(*testing::MakeYPhantom(2.0).mask, 0.5), InputError);
+  auto empty = LabelImage::New();
+  LabelImage::RegionType region;
+  region.SetSize({ { 4, 4, 4 } });
+  empty->SetRegions(region);
+  empty->Allocate(true);
+  EXPECT_THROW(WallDistanceField::FromLumen(*empty), InputError);
 }
 
 } // namespace
