@@ -1,5 +1,7 @@
 #include "Centerlines.h"
 
+#include <algorithm>
+
 namespace sgp
 {
 
@@ -20,6 +22,17 @@ const Landmark* CenterlineTree::FindLandmark(const std::string& name) const
     if (l.name == name)
       return &l;
   return nullptr;
+}
+
+Point3 PositionAt(const Centerline& c, double s)
+{
+  s = std::clamp(s, 0.0, c.LengthMm());
+  Eigen::Index i = 0;
+  while (i + 2 < c.Size() && c.abscissaMm[i + 1] < s)
+    ++i;
+  const double s0 = c.abscissaMm[i], s1 = c.abscissaMm[i + 1];
+  const double t = s1 > s0 ? (s - s0) / (s1 - s0) : 0.0;
+  return ((1 - t) * c.points.row(i) + t * c.points.row(i + 1)).transpose();
 }
 
 Centerline MakeCenterline(const std::string& name, const std::vector<Point3>& points, const std::vector<double>& radii)

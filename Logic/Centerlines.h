@@ -54,6 +54,10 @@ struct CenterlineTree
   const Landmark* FindLandmark(const std::string& name) const;
 };
 
+/// The point at arc length `s` along the centerline (linear between its points; clamped to its
+/// ends). Needs at least two points.
+Point3 PositionAt(const Centerline& c, double s);
+
 /// Builds a Centerline from points (n×3) and radii, computing the abscissa.
 Centerline MakeCenterline(const std::string& name, const std::vector<Point3>& points, const std::vector<double>& radii);
 

@@ -10,6 +10,7 @@
 #include "CheckRange.h"
 #include "Errors.h"
 #include "Format.h"
+#include "Median.h"
 #include "ImageGeometry.h"
 #include "IndexBox.h"
 #include "MaskGrid.h"
@@ -26,13 +27,6 @@ struct SeedStatistics
   double sigmaHu = 0.0;
   std::vector<CtImage::IndexType> voxels; ///< the neighbourhood, nearest to the seed first
 };
-
-double Median(std::vector<double> values)
-{
-  const auto middle = values.begin() + static_cast<long>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
 
 /// Median and 1.4826·MAD of the voxels whose centres lie within `radiusMm` of the seed (at least
 /// the seed voxel's 3×3×3 neighbourhood on coarse grids).

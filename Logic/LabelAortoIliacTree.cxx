@@ -10,6 +10,7 @@
 #include "CheckRange.h"
 #include "Errors.h"
 #include "Format.h"
+#include "Median.h"
 #include "SmoothCenterline.h"
 
 namespace sgp
@@ -17,15 +18,6 @@ namespace sgp
 
 namespace
 {
-
-double Median(std::vector<double> values)
-{
-  if (values.empty())
-    return 0.0;
-  const auto middle = values.begin() + static_cast<long>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
 
 /// Median radius of `edge` leaving `node`, beyond the junction's own radius (where the
 /// inscribed sphere still touches the parent vessel) and within `reach` mm after it.

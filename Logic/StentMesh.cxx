@@ -17,28 +17,11 @@ namespace
 
 constexpr double pi = 3.14159265358979323846;
 
-/// Position and unit tangent of a centerline at arc length s (clamped to its ends).
+/// Position and unit tangent of a centerline at arc length s (clamped to its ends); the tangent
+/// over ±2 mm, smooth enough for ring planes on a 1 mm polyline.
 std::pair<Point3, Eigen::Vector3d> PointAt(const Centerline& c, double s)
 {
-  const Eigen::Index n = c.Size();
-  s = std::clamp(s, 0.0, c.LengthMm());
-  Eigen::Index i = 0;
-  while (i + 2 < n && c.abscissaMm[i + 1] < s)
-    ++i;
-  const double s0 = c.abscissaMm[i], s1 = c.abscissaMm[i + 1];
-  const double t = s1 > s0 ? (s - s0) / (s1 - s0) : 0.0;
-  const Point3 p = ((1 - t) * c.points.row(i) + t * c.points.row(i + 1)).transpose();
-  // Tangent over ±2 mm: smooth enough for ring planes on a 1 mm polyline.
-  const auto at = [&](double q) {
-    q = std::clamp(q, 0.0, c.LengthMm());
-    Eigen::Index k = 0;
-    while (k + 2 < n && c.abscissaMm[k + 1] < q)
-      ++k;
-    const double a = c.abscissaMm[k], b = c.abscissaMm[k + 1];
-    const double u = b > a ? (q - a) / (b - a) : 0.0;
-    return Point3(((1 - u) * c.points.row(k) + u * c.points.row(k + 1)).transpose());
-  };
-  return { p, (at(s + 2.0) - at(s - 2.0)).normalized() };
+  return { PositionAt(c, s), (PositionAt(c, s + 2.0) - PositionAt(c, s - 2.0)).normalized() };
 }
 
 /// One segment's rings: centres, tangents (downstream) and frame axes u, v.
