@@ -1,5 +1,6 @@
 #include "WallDistanceField.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Dense>
@@ -42,7 +43,7 @@ WallDistanceField WallDistanceField::FromLumen(const LabelImage& lumen, double b
     outside.voxels[flat] = inside.voxels[flat] ? 0 : 1;
   }
   const std::array<double, 3> s{ spacing[0], spacing[1], spacing[2] };
-  const DistanceField in = DistanceInsideMask(inside, s);
+  const DistanceField in = DistanceInsideMask(inside, s, true, static_cast<float>(bandMm + 2.0 * s[2]));
   const DistanceField out = DistanceInsideMask(outside, s, false, static_cast<float>(bandMm + 2.0 * s[2]));
 
   WallDistanceField field;
@@ -60,7 +61,7 @@ WallDistanceField WallDistanceField::FromLumen(const LabelImage& lumen, double b
       u.norm() > 0 ? 0.5 * (u[0] * u[0] * s[0] + u[1] * u[1] * s[1] + u[2] * u[2] * s[2]) / u.squaredNorm() : 0.0;
     const double distance = d.distanceMm[flat];
     const double phi = lumenVoxel ? -(distance - halfVoxel) : distance - halfVoxel;
-    field.m_Phi[flat] = static_cast<float>(std::min(phi, bandMm));
+    field.m_Phi[flat] = static_cast<float>(std::clamp(phi, -bandMm, bandMm));
   }
   itk::ContinuousIndex<double, 3> first;
   for (unsigned a = 0; a < 3; ++a)

@@ -8,7 +8,8 @@
 /// a background neighbour, φ is then ∓h/2 and its interpolated zero lies midway: on the boundary
 /// the half-maximum segmentation placed. The force of Egger et al. (2007), equation 3, uses
 /// D = max(φ, 0), "0 inside, the distance outside"; its gradient is ∇φ outside and 0 inside.
-/// Beyond the band φ is `bandMm` and its gradient 0.
+/// Deeper than the band inside the lumen φ is −`bandMm`; beyond it outside, `bandMm` with gradient 0
+/// (only the shell around the wall is computed: the forces act there).
 ///
 /// Input: a lumen LabelImage (non-zero = lumen; any grid; spacing and direction honoured).
 /// Errors: InputError for an empty mask or a band outside [1, 100] mm.
@@ -24,7 +25,7 @@ namespace sgp
 class WallDistanceField
 {
 public:
-  static WallDistanceField FromLumen(const LabelImage& lumen, double bandMm = 15.0);
+  static WallDistanceField FromLumen(const LabelImage& lumen, double bandMm = 10.0);
 
   /// φ at `lps` (mm); writes ∇φ (LPS, dimensionless) to `gradient` when it is given.
   double Sample(const Point3& lps, Eigen::Vector3d* gradient = nullptr) const;
@@ -35,7 +36,7 @@ private:
   Point3 m_Origin = Point3::Zero();   ///< LPS of box voxel (0, 0, 0)
   Eigen::Matrix3d m_IndexToLps = Eigen::Matrix3d::Identity(); ///< direction · diag(spacing)
   Eigen::Matrix3d m_LpsToIndex = Eigen::Matrix3d::Identity();
-  double m_Band = 15.0;
+  double m_Band = 10.0;
 };
 
 } // namespace sgp
