@@ -267,16 +267,37 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
       lumen.voxels[flat] = lumen.voxels[flat] && core.voxels[flat];
       cut.voxels[flat] = core.voxels[flat] && !lumen.voxels[flat];
     }
-    const ComponentSizes pieces = MeasureComponents(cut);
-    result.cutVolumeMl = cut.CountForeground() * voxelMl;
-    if (pieces.largestSize * voxelMl > params.leakWarningMl)
+    // Pieces below leakMinimumPieceMl are vessels that narrow below the ball (small branches, a
+    // stenosis) and go back; larger ones are what a leak into bone, kidney or bowel looks like.
+    std::vector<long> sizes;
+    const std::vector<int> pieces = LabelComponents(cut, sizes);
+    long largest = 0, largestVoxel = -1;
+    for (long flat = 0; flat < cut.Count(); ++flat)
     {
-      const auto ijk = cut.Ijk(pieces.largestVoxel);
+      if (!pieces[flat])
+        continue;
+      const long size = sizes[pieces[flat] - 1];
+      if (size * voxelMl < params.leakMinimumPieceMl)
+      {
+        lumen.voxels[flat] = 1;
+        cut.voxels[flat] = 0;
+      }
+      else if (size > largest)
+      {
+        largest = size;
+        largestVoxel = flat;
+      }
+    }
+    result.cutVolumeMl = cut.CountForeground() * voxelMl;
+    if (largestVoxel >= 0)
+    {
+      const auto ijk = cut.Ijk(largestVoxel);
       CtImage::IndexType where{ { box.first[0] + ijk[0], box.first[1] + ijk[1], box.first[2] + ijk[2] } };
-      result.warnings.push_back("Leak cut: " + FormatNumber(pieces.largestSize * voxelMl, 1) +
+      result.warnings.push_back("Leak cut: " + FormatNumber(result.cutVolumeMl, 1) +
                                 " mL joined to the lumen only through bridges thinner than " +
-                                FormatNumber(2 * params.leakOpeningRadiusMm, 1) + " mm was removed (near " +
-                                FormatPoint(IndexToLps(ct, where)) + " mm LPS); check for bone or bowel there.");
+                                FormatNumber(2 * params.leakOpeningRadiusMm, 1) + " mm was removed (the largest piece " +
+                                FormatNumber(largest * voxelMl, 1) + " mL, near " + FormatPoint(IndexToLps(ct, where)) +
+                                " mm LPS); check for bone or bowel there.");
     }
   }
 

@@ -14,7 +14,10 @@
 ///  3. **Leak cutting.** A morphological opening with a ball of `leakOpeningRadiusMm`, keeping the
 ///     seed's component, cuts what is joined to the lumen only through thin bridges (partial-volume
 ///     shells along bone, noise paths); the opened region is dilated back inside the grown one,
-///     so the vessel's own shape is kept. A cut-off piece over `leakWarningMl` is reported.
+///     so the vessel's own shape is kept. Cut-off pieces smaller than `leakMinimumPieceMl` are put
+///     back — on real scans they are vessels narrower than the ball (small branches, distal
+///     vessels on 3 mm slices, the run-off beyond a stenosis) — and larger ones, the size of a
+///     leak into a vertebral body, kidney or bowel, stay cut and are reported.
 ///  4. **Leak detection.** Deep inside the region (after the opening's erosion) the lumen is
 ///     homogeneous. More than `darkLeakLimitMl` of voxels there darker than
 ///     tissue + 0.7·(m − tissue) means the region flooded a tissue of another class (kidney,
@@ -73,7 +76,7 @@ struct RegionGrowingParams
   double minimumHalfWindowHu = 30.0;      ///< floor of h for noise-free images, HU
   double refineDistanceMm = 2.0;          ///< reach of the boundary refinement, mm
   double tissueDepthMm = 5.0;             ///< where tissue is sampled outside the region, mm
-  double leakWarningMl = 1.0;             ///< cut-off piece worth a warning, mL
+  double leakMinimumPieceMl = 10.0;       ///< smaller cut-off pieces are vessels and stay, mL
   double darkLeakLimitMl = 5.0;           ///< dark interior volume that means a flood, mL
 };
 

@@ -188,6 +188,36 @@ ComponentSizes MeasureComponents(const MaskGrid& mask)
   return result;
 }
 
+std::vector<int> LabelComponents(const MaskGrid& mask, std::vector<long>& sizes)
+{
+  std::vector<int> labels(mask.voxels.size(), 0);
+  sizes.clear();
+  std::vector<long> queue;
+  for (long flat = 0; flat < mask.Count(); ++flat)
+  {
+    if (!mask.voxels[flat] || labels[flat])
+      continue;
+    const int label = static_cast<int>(sizes.size()) + 1;
+    queue.assign(1, flat);
+    labels[flat] = label;
+    for (std::size_t head = 0; head < queue.size(); ++head)
+    {
+      const std::array<long, 3> ijk = mask.Ijk(queue[head]);
+      for (const FaceStep& step : faceSteps)
+      {
+        const long n = FaceNeighbour(mask, ijk, step);
+        if (n >= 0 && mask.voxels[n] && !labels[n])
+        {
+          labels[n] = label;
+          queue.push_back(n);
+        }
+      }
+    }
+    sizes.push_back(static_cast<long>(queue.size()));
+  }
+  return labels;
+}
+
 void FillHoles(MaskGrid& mask)
 {
   std::vector<std::uint8_t> outside(mask.voxels.size(), 0);

@@ -58,6 +58,10 @@ struct ComponentSizes
 };
 ComponentSizes MeasureComponents(const MaskGrid& mask);
 
+/// Labels the 6-connected foreground components 1, 2, … (0 = background); `sizes[label − 1]` is
+/// each component's voxel count.
+std::vector<int> LabelComponents(const MaskGrid& mask, std::vector<long>& sizes);
+
 /// Sets to foreground every background voxel that is not 6-connected to the box's border
 /// through background (cavities inside the lumen).
 void FillHoles(MaskGrid& mask);
