@@ -27,7 +27,8 @@ struct Case
 /// the bandwidth of I + τK, stays the same at every size.
 const sgp::testing::YPhantom& LongY()
 {
-  static const sgp::testing::YPhantom y = [] {
+  static const sgp::testing::YPhantom y = []
+  {
     sgp::testing::YPhantom long_;
     const sgp::Point3 top(0, 0, 1000), bifurcation(0, 0, 100), right(-150, 0, -330), left(150, 0, -330);
     long_.capsules = { { top, bifurcation, 10.0 }, { bifurcation, right, 6.0 }, { bifurcation, left, 6.0 } };
@@ -93,12 +94,13 @@ void BM_IterateSparse(benchmark::State& state)
   Eigen::MatrixXd V = c.mesh.V;
   for (auto _ : state)
   {
-    const Eigen::MatrixXd b = V + params.tau * Eigen::MatrixXd(sgp::ActiveContourForces(c.mesh, *c.wall, params, contact, V));
+    const Eigen::MatrixXd b =
+      V + params.tau * Eigen::MatrixXd(sgp::ActiveContourForces(c.mesh, *c.wall, params, contact, V));
     V = solver.solve(b);
   }
   state.counters["vertices"] = double(c.mesh.V.rows());
-  state.counters["us_per_vertex"] =
-    benchmark::Counter(double(c.mesh.V.rows()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["us_per_vertex"] = benchmark::Counter(
+    double(c.mesh.V.rows()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_IterateSparse)->Arg(624)->Arg(10000)->Arg(50000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -124,7 +126,8 @@ void BM_IterateDense_PaperApproach(benchmark::State& state)
   Eigen::MatrixXd V = c.mesh.V;
   for (auto _ : state)
   {
-    const Eigen::MatrixXd b = V + params.tau * Eigen::MatrixXd(sgp::ActiveContourForces(c.mesh, *c.wall, params, contact, V));
+    const Eigen::MatrixXd b =
+      V + params.tau * Eigen::MatrixXd(sgp::ActiveContourForces(c.mesh, *c.wall, params, contact, V));
     V = inverse * b;
   }
   state.counters["vertices"] = double(c.mesh.V.rows());

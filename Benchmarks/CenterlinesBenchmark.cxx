@@ -12,7 +12,8 @@ namespace
 
 const sgp::LabelImage& LargeLumen()
 {
-  static const sgp::LabelImage::Pointer mask = [] {
+  static const sgp::LabelImage::Pointer mask = []
+  {
     const sgp::AorticPhantom& phantom = sgp::benchmarks::LargePhantom();
     return sgp::GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, sgp::RegionGrowingParams{}).mask;
   }();

@@ -10,7 +10,8 @@ namespace sgp::benchmarks
 
 inline const AorticPhantom& LargePhantom()
 {
-  static const AorticPhantom phantom = [] {
+  static const AorticPhantom phantom = []
+  {
     PhantomParams p;
     p.spacingMm = { 0.7, 0.7, 1.0 };
     p.sizeVoxels = { 512, 512, 400 };

@@ -45,7 +45,7 @@ inline std::vector<std::string> SplitStrings(const std::string& text)
 /// \param flag            the long flag, for the message
 /// \param expectedCount   required number of components; 0 accepts any non-zero count
 /// \throws ParseError     on an empty or non-numeric component or a wrong count
-template <typename T>
+template<typename T>
 std::vector<T> SplitNumbers(const std::string& text, const std::string& flag, std::size_t expectedCount)
 {
   std::vector<T> values;
@@ -67,9 +67,9 @@ std::vector<T> SplitNumbers(const std::string& text, const std::string& flag, st
   }
   if (values.empty() || (expectedCount != 0 && values.size() != expectedCount))
   {
-    throw ParseError("--" + flag + " got '" + text + "' with " + std::to_string(values.size()) +
-                     " components; expected " + (expectedCount ? std::to_string(expectedCount) : std::string("one or more")) +
-                     " comma-separated numbers");
+    throw ParseError(
+      "--" + flag + " got '" + text + "' with " + std::to_string(values.size()) + " components; expected " +
+      (expectedCount ? std::to_string(expectedCount) : std::string("one or more")) + " comma-separated numbers");
   }
   return values;
 }
@@ -87,7 +87,7 @@ inline std::string OneLine(std::string text)
   return text;
 }
 
-template <typename T>
+template<typename T>
 std::string Echo(const T& value)
 {
   std::ostringstream out;
@@ -95,7 +95,7 @@ std::string Echo(const T& value)
   return out.str();
 }
 
-template <typename T>
+template<typename T>
 std::string Echo(const std::vector<T>& values)
 {
   std::ostringstream out;

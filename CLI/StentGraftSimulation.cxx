@@ -47,10 +47,12 @@ int main(int argc, char* argv[])
       thresholdMode, lowerHu, upperHu, windowSigmas, seedMinimumHu, leakOpeningRadiusMm, maximumLumenVolumeMl);
     const SkeletonGraphParams graphParams = MakeSkeletonGraphParams(spurLengthRatio);
     const CenterlineParams centerlineParams = MakeCenterlineParams(centerlineStepMm, centerlineSmoothingMm);
-    const StentMeshParams meshParams = MakeStentMeshParams(verticesPerRing, ringSpacingMm, startRadiusMm, proximalStartMm);
-    const ActiveContourParams acmParams = MakeActiveContourParams(
-      acmMode, measureStiffnessWeights, measureBalloonRadiusMm, measureBalloonPressure, stentDiametersMm,
-      stentStiffnessWeights, stentBalloonPressure, acmTau, wallWeight, wallSofteningMm, acmMaxIterations, acmToleranceMm);
+    const StentMeshParams meshParams =
+      MakeStentMeshParams(verticesPerRing, ringSpacingMm, startRadiusMm, proximalStartMm);
+    const ActiveContourParams acmParams =
+      MakeActiveContourParams(acmMode, measureStiffnessWeights, measureBalloonRadiusMm, measureBalloonPressure,
+                              stentDiametersMm, stentStiffnessWeights, stentBalloonPressure, acmTau, wallWeight,
+                              wallSofteningMm, acmMaxIterations, acmToleranceMm);
     ValidateParameters(inputVolume, seed, growParams, graphParams, centerlineParams, meshParams, acmParams);
     const bool wantStent = !outputStentModel.empty() || !outputInitialStentModel.empty();
     const bool wantCenterlines = wantStent || !outputCenterlines.empty() || !outputLandmarks.empty();

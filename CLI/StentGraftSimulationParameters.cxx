@@ -60,7 +60,9 @@ CenterlineParams MakeCenterlineParams(double centerlineStepMm, double centerline
   return params;
 }
 
-StentMeshParams MakeStentMeshParams(int verticesPerRing, double ringSpacingMm, double startRadiusMm,
+StentMeshParams MakeStentMeshParams(int verticesPerRing,
+                                    double ringSpacingMm,
+                                    double startRadiusMm,
                                     double proximalStartMm)
 {
   StentMeshParams params;
@@ -149,8 +151,8 @@ void ValidateParameters(const std::string& inputVolume,
   ValidateCenterlineParams(centerlineParams);
   ValidateStentMeshParams(meshParams);
   ValidateActiveContourParams(acmParams);
-  for (double w : { acmParams.weights.w1, acmParams.weights.w2, acmParams.weights.w3, acmParams.weights.w4,
-                    acmParams.weights.w5 })
+  for (double w :
+       { acmParams.weights.w1, acmParams.weights.w2, acmParams.weights.w3, acmParams.weights.w4, acmParams.weights.w5 })
     CheckRange("a stiffness weight", w, 0.0, 1e6, "");
 }
 

@@ -35,7 +35,9 @@ SkeletonGraphParams MakeSkeletonGraphParams(double spurLengthRatio);
 CenterlineParams MakeCenterlineParams(double centerlineStepMm, double centerlineSmoothingMm);
 
 /// Copies the stent-mesh parameters.
-StentMeshParams MakeStentMeshParams(int verticesPerRing, double ringSpacingMm, double startRadiusMm,
+StentMeshParams MakeStentMeshParams(int verticesPerRing,
+                                    double ringSpacingMm,
+                                    double startRadiusMm,
                                     double proximalStartMm);
 
 /// The active contour's parameters for `acmMode` ("measure" or "simulate"): the mode's weights,

@@ -67,9 +67,9 @@ int main(int argc, char* argv[])
     outputs.Commit();
     progress.End();
     const auto size = phantom.ct->GetLargestPossibleRegion().GetSize();
-    std::cout << "Phantom: " << size[0] << " x " << size[1] << " x " << size[2] << " voxels written to "
-              << outputVolume << "; seed (RAS) " << FormatReturnValue(seedRas[0]) << "," << FormatReturnValue(seedRas[1])
-              << "," << FormatReturnValue(seedRas[2]) << std::endl;
+    std::cout << "Phantom: " << size[0] << " x " << size[1] << " x " << size[2] << " voxels written to " << outputVolume
+              << "; seed (RAS) " << FormatReturnValue(seedRas[0]) << "," << FormatReturnValue(seedRas[1]) << ","
+              << FormatReturnValue(seedRas[2]) << std::endl;
     return EXIT_SUCCESS;
   }
   catch (const std::exception& e)

@@ -9,7 +9,8 @@ PhantomParams MakePhantomParams(const std::vector<double>& spacingMm,
                                 const std::vector<double>& directionLps,
                                 const std::vector<int>& sizeVoxels)
 {
-  const auto count = [](const char* name, std::size_t got, std::size_t expected) {
+  const auto count = [](const char* name, std::size_t got, std::size_t expected)
+  {
     if (got != expected)
     {
       throw InputError(std::string(name) + " has " + std::to_string(got) + " values; expected " +

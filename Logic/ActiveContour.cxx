@@ -25,7 +25,10 @@ Eigen::Vector3d RadialOffset(const StentMesh& mesh, Eigen::Index i, const Point3
 }
 
 /// φ at vertex i, with the crotch plane as a wall for the legs (see FitActiveContour's header).
-double EffectiveWallDistance(const StentMesh& mesh, const WallDistanceField& wall, Eigen::Index i, const Point3& v,
+double EffectiveWallDistance(const StentMesh& mesh,
+                             const WallDistanceField& wall,
+                             Eigen::Index i,
+                             const Point3& v,
                              Eigen::Vector3d* gradient)
 {
   double phi = wall.Sample(v, gradient);
@@ -46,8 +49,11 @@ double EffectiveWallDistance(const StentMesh& mesh, const WallDistanceField& wal
 
 } // namespace
 
-Points ActiveContourForces(const StentMesh& mesh, const WallDistanceField& wall, const ActiveContourParams& p,
-                           std::vector<bool>& contact, const Points& V)
+Points ActiveContourForces(const StentMesh& mesh,
+                           const WallDistanceField& wall,
+                           const ActiveContourParams& p,
+                           std::vector<bool>& contact,
+                           const Points& V)
 {
   Points F = Points::Zero(V.rows(), 3);
   for (Eigen::Index i = 0; i < V.rows(); ++i)
@@ -117,11 +123,14 @@ void ValidateActiveContourParams(const ActiveContourParams& p)
     CheckRange(names[s], p.balloonRadiusMm[s], 1e-3, 200, "mm");
   CheckRange("maxIterations", p.maxIterations, 1, 100000, "");
   CheckRange("toleranceMm", p.toleranceMm, 1e-9, 10, "mm");
-
 }
 
-double ActiveContourEnergy(const StentMesh& mesh, const SparseMatrix& K, const WallDistanceField& wall,
-                           const ActiveContourParams& p, const std::vector<bool>& contact, const Points& V)
+double ActiveContourEnergy(const StentMesh& mesh,
+                           const SparseMatrix& K,
+                           const WallDistanceField& wall,
+                           const ActiveContourParams& p,
+                           const std::vector<bool>& contact,
+                           const Points& V)
 {
   double energy = InternalEnergy(K, V);
   for (Eigen::Index i = 0; i < V.rows(); ++i)
@@ -139,8 +148,10 @@ double ActiveContourEnergy(const StentMesh& mesh, const SparseMatrix& K, const W
   return energy;
 }
 
-ActiveContourResult FitActiveContour(const StentMesh& mesh, const WallDistanceField& wall,
-                                     const ActiveContourParams& p, const ProgressCallback& progress)
+ActiveContourResult FitActiveContour(const StentMesh& mesh,
+                                     const WallDistanceField& wall,
+                                     const ActiveContourParams& p,
+                                     const ProgressCallback& progress)
 {
   ValidateActiveContourParams(p);
   const SparseMatrix K = AssembleStiffnessMatrix(mesh, p.weights);
@@ -149,11 +160,12 @@ ActiveContourResult FitActiveContour(const StentMesh& mesh, const WallDistanceFi
   A += p.tau * K;
   Eigen::SimplicialLDLT<SparseMatrix> solver;
   ActiveContourResult result;
-  const auto factor = [&] {
+  const auto factor = [&]
+  {
     solver.compute(A);
     ++result.factorizations;
   };
-  factor(); // once per run: every step below reuses it
+  factor();                            // once per run: every step below reuses it
   if (solver.info() != Eigen::Success) // cannot happen: I + τK is symmetric positive definite
     throw std::logic_error("ActiveContour: the LDLT factorization of I + tau K failed");
   Eigen::MatrixXd V = mesh.V;

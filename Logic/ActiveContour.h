@@ -66,15 +66,15 @@ namespace sgp
 struct ActiveContourParams
 {
   StiffnessWeights weights{ 0.005, 0.005, 0.005, 0.005, 0.005 };
-  double tau = 0.15;                      ///< step, in (0, 10]
-  double wallWeight = 5.0;                ///< w_wall, in [0, 1e3]
-  double wallSofteningMm = 1.0;           ///< δ, in (0, 10] mm
-  double balloonPressure = 0.02;          ///< p, in [0, 1e2]
-  double contactPressureFactor = 0.1;     ///< pressure kept after contact, in [0, 1]
-  double ringPlaneWeight = 0.05;          ///< k_a, holds each vertex near its ring's plane, [0, 1e2]
+  double tau = 0.15;                                         ///< step, in (0, 10]
+  double wallWeight = 5.0;                                   ///< w_wall, in [0, 1e3]
+  double wallSofteningMm = 1.0;                              ///< δ, in (0, 10] mm
+  double balloonPressure = 0.02;                             ///< p, in [0, 1e2]
+  double contactPressureFactor = 0.1;                        ///< pressure kept after contact, in [0, 1]
+  double ringPlaneWeight = 0.05;                             ///< k_a, holds each vertex near its ring's plane, [0, 1e2]
   std::array<double, 3> balloonRadiusMm{ 60.0, 60.0, 60.0 }; ///< R per StentSegment, (0, 200]
-  int maxIterations = 3000;               ///< in [1, 100000]
-  double toleranceMm = 0.005;             ///< in (0, 10]
+  int maxIterations = 3000;                                  ///< in [1, 100000]
+  double toleranceMm = 0.005;                                ///< in (0, 10]
 
   /// Measure mode (paper, section 2.2): small weights, R large.
   static ActiveContourParams Measure();
@@ -84,12 +84,12 @@ struct ActiveContourParams
 
 struct ActiveContourResult
 {
-  Points V;                     ///< #V×3, the fitted surface
+  Points V; ///< #V×3, the fitted surface
   int iterations = 0;
   bool converged = false;
-  std::vector<double> energy;   ///< before the first step and after each
-  int verticesInContact = 0;    ///< vertices that have reached the wall
-  int factorizations = 0;       ///< factorizations of I + τK performed (one per run)
+  std::vector<double> energy;       ///< before the first step and after each
+  int verticesInContact = 0;        ///< vertices that have reached the wall
+  int factorizations = 0;           ///< factorizations of I + τK performed (one per run)
   double maxRelativeResidual = 0.0; ///< max over steps of ‖(I+τK)V⁺ − b‖ / ‖b‖
   Eigen::VectorXd wallDistanceMm;   ///< #V: φ at each vertex (negative inside the lumen)
   Eigen::VectorXd radiusMm;         ///< #V: r, distance from the vertex's centerline point in its ring's plane
@@ -103,11 +103,18 @@ ActiveContourResult FitActiveContour(const StentMesh& mesh,
                                      const ProgressCallback& progress = {});
 
 /// F_ext(V) (#V×3) as defined above; sets `contact` (#V flags) for vertices past the wall.
-Points ActiveContourForces(const StentMesh& mesh, const WallDistanceField& wall, const ActiveContourParams& params,
-                           std::vector<bool>& contact, const Points& V);
+Points ActiveContourForces(const StentMesh& mesh,
+                           const WallDistanceField& wall,
+                           const ActiveContourParams& params,
+                           std::vector<bool>& contact,
+                           const Points& V);
 
 /// E(V) as defined above; `contact` flags the vertices in contact (empty: none).
-double ActiveContourEnergy(const StentMesh& mesh, const SparseMatrix& K, const WallDistanceField& wall,
-                           const ActiveContourParams& params, const std::vector<bool>& contact, const Points& V);
+double ActiveContourEnergy(const StentMesh& mesh,
+                           const SparseMatrix& K,
+                           const WallDistanceField& wall,
+                           const ActiveContourParams& params,
+                           const std::vector<bool>& contact,
+                           const Points& V);
 
 } // namespace sgp

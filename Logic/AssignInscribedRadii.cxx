@@ -16,7 +16,8 @@ void AssignInscribedRadii(CenterlineTree& tree, const Skeleton& skeleton, double
   for (std::size_t i : byZ)
     zs.push_back(skeleton.pointsLps[i].z());
 
-  const auto assign = [&](Centerline& c) {
+  const auto assign = [&](Centerline& c)
+  {
     for (Eigen::Index i = 0; i < c.Size(); ++i)
     {
       const Point3 p = c.points.row(i).transpose();

@@ -19,8 +19,10 @@ struct Candidate
 
 } // namespace
 
-DistanceField DistanceInsideMask(const MaskGrid& mask, const std::array<double, 3>& spacingMm,
-                                 bool outsideIsBackground, float maximumDistanceMm)
+DistanceField DistanceInsideMask(const MaskGrid& mask,
+                                 const std::array<double, 3>& spacingMm,
+                                 bool outsideIsBackground,
+                                 float maximumDistanceMm)
 {
   const float infinity = std::numeric_limits<float>::max();
   DistanceField field;
@@ -29,16 +31,15 @@ DistanceField DistanceInsideMask(const MaskGrid& mask, const std::array<double, 
   std::vector<float>& distance = field.distanceMm;
   std::vector<std::array<int, 3>>& site = field.nearestBackground;
   std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> queue;
-  const auto length = [&](const std::array<long, 3>& a, const std::array<int, 3>& b) {
+  const auto length = [&](const std::array<long, 3>& a, const std::array<int, 3>& b)
+  {
     const double x = (a[0] - b[0]) * spacingMm[0], y = (a[1] - b[1]) * spacingMm[1], z = (a[2] - b[2]) * spacingMm[2];
     return static_cast<float>(std::sqrt(x * x + y * y + z * z));
   };
-  const auto outside = [&](long i, long j, long k) {
-    return i < 0 || j < 0 || k < 0 || i >= mask.size[0] || j >= mask.size[1] || k >= mask.size[2];
-  };
-  const auto isBackground = [&](long i, long j, long k) {
-    return outside(i, j, k) ? outsideIsBackground : !mask.voxels[mask.Flat(i, j, k)];
-  };
+  const auto outside = [&](long i, long j, long k)
+  { return i < 0 || j < 0 || k < 0 || i >= mask.size[0] || j >= mask.size[1] || k >= mask.size[2]; };
+  const auto isBackground = [&](long i, long j, long k)
+  { return outside(i, j, k) ? outsideIsBackground : !mask.voxels[mask.Flat(i, j, k)]; };
 
   for (long flat = 0; flat < mask.Count(); ++flat)
   {

@@ -31,7 +31,9 @@ struct DistanceField
 
 /// \param outsideIsBackground  whether voxels outside the box count as background (sites)
 /// \param maximumDistanceMm    propagation stops beyond it; farther voxels get this value
-DistanceField DistanceInsideMask(const MaskGrid& mask, const std::array<double, 3>& spacingMm,
-                                 bool outsideIsBackground = true, float maximumDistanceMm = 1e30f);
+DistanceField DistanceInsideMask(const MaskGrid& mask,
+                                 const std::array<double, 3>& spacingMm,
+                                 bool outsideIsBackground = true,
+                                 float maximumDistanceMm = 1e30f);
 
 } // namespace sgp

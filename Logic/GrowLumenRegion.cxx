@@ -30,7 +30,9 @@ struct SeedStatistics
 
 /// Median and 1.4826·MAD of the voxels whose centres lie within `radiusMm` of the seed (at least
 /// the seed voxel's 3×3×3 neighbourhood on coarse grids).
-SeedStatistics MeasureSeedNeighbourhood(const CtImage& ct, const CtImage::IndexType& seed, const Point3& seedLps,
+SeedStatistics MeasureSeedNeighbourhood(const CtImage& ct,
+                                        const CtImage::IndexType& seed,
+                                        const Point3& seedLps,
                                         double radiusMm)
 {
   const auto spacing = ct.GetSpacing();
@@ -117,8 +119,8 @@ double MeasureTissueHu(const MaskGrid& mask, const std::vector<short>& hu, const
 
 short ClampToShort(double value)
 {
-  return static_cast<short>(std::clamp(value, double(std::numeric_limits<short>::min()),
-                                       double(std::numeric_limits<short>::max())));
+  return static_cast<short>(
+    std::clamp(value, double(std::numeric_limits<short>::min()), double(std::numeric_limits<short>::max())));
 }
 
 } // namespace
@@ -161,9 +163,10 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
   const std::string seedText = "Seed " + FormatPoint(seedLps) + " mm LPS";
   if (stats.medianHu < params.seedMinimumHu)
   {
-    throw InputError(seedText + " lies in tissue of " + FormatNumber(stats.medianHu, 0) + " HU (median of " +
-                     std::to_string(stats.voxels.size()) + " voxels around it); expected contrast-filled lumen of at least " +
-                     FormatNumber(params.seedMinimumHu, 0) + " HU (seedMinimumHu); move the seed into the aortic lumen.");
+    throw InputError(
+      seedText + " lies in tissue of " + FormatNumber(stats.medianHu, 0) + " HU (median of " +
+      std::to_string(stats.voxels.size()) + " voxels around it); expected contrast-filled lumen of at least " +
+      FormatNumber(params.seedMinimumHu, 0) + " HU (seedMinimumHu); move the seed into the aortic lumen.");
   }
   if (params.thresholdMode == ThresholdMode::Auto)
   {
@@ -184,9 +187,9 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
   }
   // Start from the neighbourhood voxel nearest the seed that lies in the window (noise may put
   // the seed voxel itself just outside it).
-  const auto start = std::find_if(stats.voxels.begin(), stats.voxels.end(), [&](const auto& index) {
-    return ct.GetPixel(index) >= result.lowerHu && ct.GetPixel(index) <= result.upperHu;
-  });
+  const auto start = std::find_if(
+    stats.voxels.begin(), stats.voxels.end(),
+    [&](const auto& index) { return ct.GetPixel(index) >= result.lowerHu && ct.GetPixel(index) <= result.upperHu; });
   if (start == stats.voxels.end())
   {
     // Cannot happen: the median is one of the neighbourhood's values and lies in the window.
@@ -226,10 +229,12 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
   const auto imageSize = ct.GetLargestPossibleRegion().GetSize();
   MaskGrid core(box.size);
   std::vector<short> hu(static_cast<std::size_t>(core.Count()));
-  ForEachInBox(box, imageSize, [&](long flat, long image) {
-    core.voxels[flat] = grown->GetBufferPointer()[image] ? 1 : 0;
-    hu[flat] = ct.GetBufferPointer()[image];
-  });
+  ForEachInBox(box, imageSize,
+               [&](long flat, long image)
+               {
+                 core.voxels[flat] = grown->GetBufferPointer()[image] ? 1 : 0;
+                 hu[flat] = ct.GetBufferPointer()[image];
+               });
 
   MaskGrid lumen = core;
   MaskGrid interior = core;
@@ -293,11 +298,11 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
     {
       const auto ijk = cut.Ijk(largestVoxel);
       CtImage::IndexType where{ { box.first[0] + ijk[0], box.first[1] + ijk[1], box.first[2] + ijk[2] } };
-      result.warnings.push_back("Leak cut: " + FormatNumber(result.cutVolumeMl, 1) +
-                                " mL joined to the lumen only through bridges thinner than " +
-                                FormatNumber(2 * params.leakOpeningRadiusMm, 1) + " mm was removed (the largest piece " +
-                                FormatNumber(largest * voxelMl, 1) + " mL, near " + FormatPoint(IndexToLps(ct, where)) +
-                                " mm LPS); check for bone or bowel there.");
+      result.warnings.push_back(
+        "Leak cut: " + FormatNumber(result.cutVolumeMl, 1) +
+        " mL joined to the lumen only through bridges thinner than " + FormatNumber(2 * params.leakOpeningRadiusMm, 1) +
+        " mm was removed (the largest piece " + FormatNumber(largest * voxelMl, 1) + " mL, near " +
+        FormatPoint(IndexToLps(ct, where)) + " mm LPS); check for bone or bowel there.");
     }
   }
 
@@ -316,9 +321,10 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
   if (dark * voxelMl > params.darkLeakLimitMl)
   {
     throw AlgorithmError("Region growing leaked into darker tissue: " + FormatNumber(dark * voxelMl, 1) +
-                         " mL deep inside the region is below " + FormatNumber(darkHu, 0) + " HU, while the lumen at the " +
-                         "seed is " + FormatNumber(stats.medianHu, 0) + " HU (likely kidney, bowel or marrow); raise the " +
-                         "lower threshold (now " + FormatNumber(result.lowerHu, 0) + " HU) or use thresholdMode auto.");
+                         " mL deep inside the region is below " + FormatNumber(darkHu, 0) +
+                         " HU, while the lumen at the " + "seed is " + FormatNumber(stats.medianHu, 0) +
+                         " HU (likely kidney, bowel or marrow); raise the " + "lower threshold (now " +
+                         FormatNumber(result.lowerHu, 0) + " HU) or use thresholdMode auto.");
   }
 
   ReportProgress(progress, 0.7, "Refining the boundary");
@@ -348,7 +354,8 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
   result.mask->CopyInformation(&ct);
   result.mask->SetRegions(ct.GetLargestPossibleRegion());
   result.mask->Allocate(true);
-  ForEachInBox(box, imageSize, [&](long flat, long image) { result.mask->GetBufferPointer()[image] = lumen.voxels[flat]; });
+  ForEachInBox(box, imageSize,
+               [&](long flat, long image) { result.mask->GetBufferPointer()[image] = lumen.voxels[flat]; });
   ReportProgress(progress, 1.0, "Done");
   return result;
 }

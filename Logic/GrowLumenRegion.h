@@ -23,9 +23,9 @@
 ///     tissue + 0.7·(m − tissue) means the region flooded a tissue of another class (kidney,
 ///     bowel, marrow): AlgorithmError. So does a lumen over `maximumLumenVolumeMl`.
 ///  5. **Boundary refinement.** The boundary is moved to the half-maximum between lumen (m) and the
-///     surrounding tissue (median HU `tissueDepthMm` outside the region, beyond the blur of the edge): neighbours within
-///     `refineDistanceMm` with HU in [edge, upper] are added; this undoes the conservative lower
-///     threshold without reaching into darker tissue.
+///     surrounding tissue (median HU `tissueDepthMm` outside the region, beyond the blur of the edge): neighbours
+///     within `refineDistanceMm` with HU in [edge, upper] are added; this undoes the conservative lower threshold
+///     without reaching into darker tissue.
 ///  6. **Pits and holes:** single background voxels with five or six lumen faces (noise pits in the
 ///     boundary) and background cavities not connected to the outside become lumen.
 ///
@@ -65,11 +65,11 @@ enum class ThresholdMode
 struct RegionGrowingParams
 {
   ThresholdMode thresholdMode = ThresholdMode::Auto;
-  double lowerHu = 200.0;              ///< Manual window, HU; must be < upperHu; in [-1024, 3071]
-  double upperHu = 600.0;              ///< Manual window, HU; in [-1024, 3071]
-  double windowSigmas = 3.0;           ///< Auto half-width below the median, in σ; in [1, 10]
-  double seedMinimumHu = 150.0;        ///< lumen test at the seed, HU; in [-1024, 3071]
-  double leakOpeningRadiusMm = 1.0;    ///< opening ball radius, mm; 0 disables; in [0, 5]
+  double lowerHu = 200.0;               ///< Manual window, HU; must be < upperHu; in [-1024, 3071]
+  double upperHu = 600.0;               ///< Manual window, HU; in [-1024, 3071]
+  double windowSigmas = 3.0;            ///< Auto half-width below the median, in σ; in [1, 10]
+  double seedMinimumHu = 150.0;         ///< lumen test at the seed, HU; in [-1024, 3071]
+  double leakOpeningRadiusMm = 1.0;     ///< opening ball radius, mm; 0 disables; in [0, 5]
   double maximumLumenVolumeMl = 1500.0; ///< larger lumen = leak, mL; in [1, 20000]
 
   double seedNeighbourhoodRadiusMm = 2.5; ///< ball for the seed statistics, mm
@@ -86,15 +86,15 @@ void ValidateRegionGrowingParams(const RegionGrowingParams& params);
 
 struct LumenSegmentation
 {
-  LabelImage::Pointer mask; ///< on the grid of the input, 1 = lumen
-  double volumeMl = 0.0;    ///< lumen volume, mL
-  double lowerHu = 0.0;     ///< window used, HU
-  double upperHu = 0.0;     ///< window used, HU
-  double edgeHu = 0.0;      ///< half-maximum boundary level used, HU
-  double seedMedianHu = 0.0; ///< median HU around the seed
-  double seedSigmaHu = 0.0;  ///< robust standard deviation around the seed, HU
-  double tissueHu = 0.0;     ///< median HU just outside the region
-  double cutVolumeMl = 0.0;  ///< volume removed by the leak-cutting opening, mL
+  LabelImage::Pointer mask;          ///< on the grid of the input, 1 = lumen
+  double volumeMl = 0.0;             ///< lumen volume, mL
+  double lowerHu = 0.0;              ///< window used, HU
+  double upperHu = 0.0;              ///< window used, HU
+  double edgeHu = 0.0;               ///< half-maximum boundary level used, HU
+  double seedMedianHu = 0.0;         ///< median HU around the seed
+  double seedSigmaHu = 0.0;          ///< robust standard deviation around the seed, HU
+  double tissueHu = 0.0;             ///< median HU just outside the region
+  double cutVolumeMl = 0.0;          ///< volume removed by the leak-cutting opening, mL
   std::vector<std::string> warnings; ///< one line each, without the "WARNING: " prefix
 };
 

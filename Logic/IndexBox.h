@@ -22,7 +22,7 @@ struct IndexBox
 IndexBox ForegroundBox(const LabelImage& mask, const std::array<long, 3>& pad = { 0, 0, 0 });
 
 /// Calls f(flatInBox, flatInImage) for every voxel of `box` (which lies inside the image).
-template <typename Function>
+template<typename Function>
 void ForEachInBox(const IndexBox& box, const itk::Size<3>& imageSize, Function f)
 {
   long flat = 0;

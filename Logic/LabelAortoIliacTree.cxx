@@ -109,8 +109,8 @@ struct VesselPath
   struct Junction
   {
     int node;
-    double abscissa;             ///< along the path, mm
-    std::vector<int> sideEdges;  ///< the branches not taken
+    double abscissa;            ///< along the path, mm
+    std::vector<int> sideEdges; ///< the branches not taken
   };
   std::vector<Junction> junctions;
   std::vector<int> nodes; ///< every node passed, the start included
@@ -178,7 +178,8 @@ VesselPath FollowVessel(const SkeletonGraph& graph, int start, int firstEdge, st
 /// Longest shortest-path distance in the graph, by two Dijkstra sweeps (exact on a tree).
 double LongestPathMm(const SkeletonGraph& graph)
 {
-  const auto farthest = [&](int source) {
+  const auto farthest = [&](int source)
+  {
     std::vector<double> d(graph.nodes.size(), std::numeric_limits<double>::max());
     using Item = std::pair<double, int>;
     std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
@@ -243,15 +244,16 @@ std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph, const Cent
           // directions are compared with each other rather than with the x axis.
           const bool sides = left.direction.x() - right.direction.x() > 0.3;
           const bool long_ = right.length >= params.minimumIliacLengthMm && left.length >= params.minimumIliacLengthMm;
-          const auto descends = [&](int edge) {
+          const auto descends = [&](int edge)
+          {
             const VesselPath path = FollowVessel(graph, n, edge, {}, params.directionReachMm);
             return path.points.back().z() <= graph.nodes[n].position.z() - params.minimumIliacDescentMm;
           };
           // The iliacs are narrower than the aorta, but not much: this also rejects the arch in
           // a chest scan, whose two limbs go down under a narrow supra-aortic branch.
           const double minimum = params.minimumIliacRadiusRatio * up.radius;
-          const bool wide = right.radius >= minimum && left.radius >= minimum &&
-                            up.radius >= 0.8 * std::max(right.radius, left.radius);
+          const bool wide =
+            right.radius >= minimum && left.radius >= minimum && up.radius >= 0.8 * std::max(right.radius, left.radius);
           if (lower && sides && long_ && wide && descends(right.edge) && descends(left.edge))
           {
             const double score = std::min(right.radius, left.radius);
@@ -269,7 +271,9 @@ std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph, const Cent
   return found;
 }
 
-Centerline Finish(const std::string& name, const std::vector<Point3>& points, const std::vector<double>& radii,
+Centerline Finish(const std::string& name,
+                  const std::vector<Point3>& points,
+                  const std::vector<double>& radii,
                   const CenterlineParams& params)
 {
   return SmoothCenterline(MakeCenterline(name, points, radii), params.stepMm, params.smoothingMm);
@@ -286,8 +290,10 @@ struct SideBranch
 
 /// Names the aorta's side branches by how they leave it (see the header, step 4); unnamed ones
 /// stay empty. `sides` are sorted from the top down; landmarks are appended.
-std::vector<std::string> NameAorticBranches(const SkeletonGraph& graph, const std::vector<SideBranch>& sides,
-                                            const Point3& bifurcation, std::vector<Landmark>& landmarks)
+std::vector<std::string> NameAorticBranches(const SkeletonGraph& graph,
+                                            const std::vector<SideBranch>& sides,
+                                            const Point3& bifurcation,
+                                            std::vector<Landmark>& landmarks)
 {
   std::vector<std::string> names(sides.size());
   const auto height = [&](const SideBranch& s) { return graph.nodes[s.node].position.z() - bifurcation.z(); };
@@ -318,8 +324,8 @@ std::vector<std::string> NameAorticBranches(const SkeletonGraph& graph, const st
     for (int i = 0; i < int(sides.size()); ++i)
     {
       const Eigen::Vector3d d = sides[i].direction;
-      const bool lateral = std::abs(d.x()) >= 0.5 && std::abs(d.x()) >= std::abs(d.y()) && d.z() <= 0.6 &&
-                           (right ? d.x() < 0 : d.x() > 0);
+      const bool lateral =
+        std::abs(d.x()) >= 0.5 && std::abs(d.x()) >= std::abs(d.y()) && d.z() <= 0.6 && (right ? d.x() < 0 : d.x() > 0);
       if (names[i].empty() && lateral && height(sides[i]) > 20.0 && height(sides[i]) < renalCeiling)
       {
         names[i] = std::string(sideName) + "AccessoryRenal";
@@ -400,7 +406,8 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
   std::vector<SideBranch> aorticSides;
   if (PathLength(std::vector<Point3>(up.points.begin() + long(top), up.points.end())) > params.minimumBranchLengthMm)
   {
-    tree.sideBranches.push_back(Finish("ascendingAorta", std::vector<Point3>(up.points.begin() + long(top), up.points.end()),
+    tree.sideBranches.push_back(Finish("ascendingAorta",
+                                       std::vector<Point3>(up.points.begin() + long(top), up.points.end()),
                                        std::vector<double>(up.radii.begin() + long(top), up.radii.end()), params));
   }
   else
@@ -415,7 +422,8 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
   tree.aorta = Finish("aorta", aortaPoints, aortaRadii, params);
 
   // The iliacs, each with its internal iliac.
-  const auto iliac = [&](int edge, const std::string& side, Centerline& out) {
+  const auto iliac = [&](int edge, const std::string& side, Centerline& out)
+  {
     std::set<int> blocked = mainNodes;
     const VesselPath path = FollowVessel(graph, y.node, edge, blocked, reach);
     out = Finish(side + "Iliac", path.points, path.radii, params);
@@ -425,9 +433,11 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
     for (const auto& junction : path.junctions)
       for (int e : junction.sideEdges)
       {
-        const VesselPath branch = FollowVessel(graph, junction.node, e, std::set<int>(path.nodes.begin(), path.nodes.end()), reach);
-        const bool internal = !internalFound && ReachableLength(graph, e, junction.node) >= params.minimumBranchLengthMm / 2 &&
-                              BranchRadius(graph, e, junction.node, reach) >= params.internalIliacRadiusRatio * commonRadius;
+        const VesselPath branch =
+          FollowVessel(graph, junction.node, e, std::set<int>(path.nodes.begin(), path.nodes.end()), reach);
+        const bool internal =
+          !internalFound && ReachableLength(graph, e, junction.node) >= params.minimumBranchLengthMm / 2 &&
+          BranchRadius(graph, e, junction.node, reach) >= params.internalIliacRadiusRatio * commonRadius;
         std::string name = internal ? side + "InternalIliac" : side + "IliacBranch" + std::to_string(++numbered);
         if (internal)
         {
@@ -450,9 +460,9 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
         side.direction = Eigen::Vector3d::Zero(); // not abdominal: never a renal or visceral branch
       aorticSides.push_back(side);
     }
-  std::sort(aorticSides.begin(), aorticSides.end(), [&](const SideBranch& a, const SideBranch& b) {
-    return graph.nodes[a.node].position.z() > graph.nodes[b.node].position.z();
-  });
+  std::sort(aorticSides.begin(), aorticSides.end(),
+            [&](const SideBranch& a, const SideBranch& b)
+            { return graph.nodes[a.node].position.z() > graph.nodes[b.node].position.z(); });
   std::vector<std::string> names = NameAorticBranches(graph, aorticSides, bifurcation, tree.landmarks);
   int numbered = 0;
   for (int i = 0; i < int(aorticSides.size()); ++i)

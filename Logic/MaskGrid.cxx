@@ -228,8 +228,8 @@ void FillHoles(MaskGrid& mask)
     {
       for (long i = 0; i < mask.size[0]; ++i)
       {
-        const bool border = i == 0 || j == 0 || k == 0 || i == mask.size[0] - 1 || j == mask.size[1] - 1 ||
-                            k == mask.size[2] - 1;
+        const bool border =
+          i == 0 || j == 0 || k == 0 || i == mask.size[0] - 1 || j == mask.size[1] - 1 || k == mask.size[2] - 1;
         const long flat = mask.Flat(i, j, k);
         if (border && !mask.voxels[flat])
         {

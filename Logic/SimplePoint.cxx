@@ -28,8 +28,8 @@ struct AdjacencyTables
 {
   std::array<std::uint32_t, 27> adjacency26{};
   std::array<std::uint32_t, 27> adjacency6{};
-  std::uint32_t faces = 0;      ///< the 6 face neighbours of the centre
-  std::uint32_t n18 = 0;        ///< the 18 face and edge neighbours of the centre
+  std::uint32_t faces = 0; ///< the 6 face neighbours of the centre
+  std::uint32_t n18 = 0;   ///< the 18 face and edge neighbours of the centre
   AdjacencyTables()
   {
     for (int a = 0; a < 27; ++a)

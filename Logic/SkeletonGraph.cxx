@@ -70,7 +70,8 @@ struct WorkGraph
       if ((da == 1) == (db == 1)) // not a spur: both ends are ends (the whole graph) or junctions
         continue;
       const int junction = da == 1 ? edge.b : edge.a;
-      const double limit = std::max(params.minimumSpurLengthMm, params.spurLengthRatio * graph.nodes[junction].radiusMm);
+      const double limit =
+        std::max(params.minimumSpurLengthMm, params.spurLengthRatio * graph.nodes[junction].radiusMm);
       if (edge.lengthMm < limit)
         spurs.push_back(e);
     }
@@ -230,7 +231,8 @@ void ValidateSkeletonGraphParams(const SkeletonGraphParams& params)
   CheckRange("junctionMergeRatio", params.junctionMergeRatio, 0, 2, "");
 }
 
-SkeletonGraph BuildSkeletonGraph(const Skeleton& skeleton, const LabelImage& reference,
+SkeletonGraph BuildSkeletonGraph(const Skeleton& skeleton,
+                                 const LabelImage& reference,
                                  const SkeletonGraphParams& params)
 {
   ValidateSkeletonGraphParams(params);
@@ -238,9 +240,7 @@ SkeletonGraph BuildSkeletonGraph(const Skeleton& skeleton, const LabelImage& ref
   if (count == 0)
     throw InputError("The skeleton is empty; the lumen mask had no voxel to thin.");
   const auto size = reference.GetLargestPossibleRegion().GetSize();
-  const auto flatOf = [&](const itk::Index<3>& v) {
-    return v[0] + long(size[0]) * (v[1] + long(size[1]) * v[2]);
-  };
+  const auto flatOf = [&](const itk::Index<3>& v) { return v[0] + long(size[0]) * (v[1] + long(size[1]) * v[2]); };
   std::unordered_map<long, int> idOf;
   for (int v = 0; v < count; ++v)
     idOf[flatOf(skeleton.voxels[v])] = v;

@@ -48,10 +48,10 @@ struct SkeletonGraph
   };
   struct Edge
   {
-    int a = -1, b = -1;            ///< end nodes; points run from a to b
-    std::vector<Point3> points;    ///< LPS mm, first = node a, last = node b
-    std::vector<double> radiusMm;  ///< per point
-    double lengthMm = 0.0;         ///< polyline length
+    int a = -1, b = -1;           ///< end nodes; points run from a to b
+    std::vector<Point3> points;   ///< LPS mm, first = node a, last = node b
+    std::vector<double> radiusMm; ///< per point
+    double lengthMm = 0.0;        ///< polyline length
   };
   std::vector<Node> nodes;
   std::vector<Edge> edges;

@@ -35,7 +35,8 @@ struct RingFrames
 void PropagateFrames(RingFrames& f, int from, double handedness)
 {
   const int n = static_cast<int>(f.centre.size());
-  const auto step = [&](int i, int next) {
+  const auto step = [&](int i, int next)
+  {
     const Eigen::Vector3d v1 = f.centre[next] - f.centre[i];
     const double c1 = v1.squaredNorm();
     Eigen::Vector3d rL = f.u[i], tL = f.tangent[i];
@@ -188,7 +189,8 @@ StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& p)
         const int id = mesh.Id(seg, k, j);
         const double theta = 2.0 * pi * j / n;
         const RingFrames& f = frames[seg];
-        mesh.V.row(id) = (f.centre[k] + p.startRadiusMm * (std::cos(theta) * f.u[k] + std::sin(theta) * f.v[k])).transpose();
+        mesh.V.row(id) =
+          (f.centre[k] + p.startRadiusMm * (std::cos(theta) * f.u[k] + std::sin(theta) * f.v[k])).transpose();
         mesh.centre.row(id) = f.centre[k].transpose();
         mesh.axis.row(id) = f.tangent[k].transpose();
         mesh.segment[id] = seg;
@@ -201,14 +203,16 @@ StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& p)
 
   // s-chains through the connection element (see the header).
   const int kt = mesh.ringCount[0];
-  const auto column = [&](int seg, int j, bool downward) {
+  const auto column = [&](int seg, int j, bool downward)
+  {
     std::vector<int> ids;
     const int rings = mesh.ringCount[seg];
     for (int k = 0; k < rings; ++k)
       ids.push_back(mesh.Id(seg, downward ? k : rings - 1 - k, j));
     return ids;
   };
-  const auto join = [](std::vector<int> a, const std::vector<int>& b) {
+  const auto join = [](std::vector<int> a, const std::vector<int>& b)
+  {
     a.insert(a.end(), b.begin(), b.end());
     return a;
   };
@@ -224,7 +228,8 @@ StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& p)
 
   // Triangles: each segment's quads, then the connection element.
   std::vector<Eigen::Vector3i> triangles;
-  const auto quad = [&](int a, int b, int c, int d) {
+  const auto quad = [&](int a, int b, int c, int d)
+  {
     triangles.emplace_back(a, b, c);
     triangles.emplace_back(a, c, d);
   };

@@ -49,24 +49,24 @@ enum StentSegment : int
 
 struct StentMeshParams
 {
-  int verticesPerRing = 16;        ///< n, a multiple of 4 in [8, 256]
-  double ringSpacingMm = 4.0;      ///< in [0.5, 20]
-  double startRadiusMm = 3.0;      ///< in [0.5, 30]
+  int verticesPerRing = 16;   ///< n, a multiple of 4 in [8, 256]
+  double ringSpacingMm = 4.0; ///< in [0.5, 20]
+  double startRadiusMm = 3.0; ///< in [0.5, 30]
   /// Where the trunk starts, as arc length along the aorta from its top, mm (≥ 0); negative: 5 mm
   /// below the lowest renal ostium landmark, or the top without one.
   double proximalAbscissaMm = -1.0;
-  double legLengthMm = 0.0;        ///< 0 = to the internal iliac origin (60 mm without one)
+  double legLengthMm = 0.0; ///< 0 = to the internal iliac origin (60 mm without one)
 };
 
 struct StentMesh
 {
-  Points V;                     ///< #V×3 vertex positions, LPS mm
-  Triangles F;                  ///< #F×3, for display
-  Points centre;                ///< #V×3: each vertex's point on its centerline, LPS mm
-  Points axis;                  ///< #V×3: the unit centerline tangent there (downstream)
-  Eigen::VectorXi segment;      ///< #V: StentSegment
-  Eigen::VectorXi ring;         ///< #V: ring number within its segment, from the top / the junction
-  Eigen::VectorXi column;       ///< #V: j, the position on the ring
+  Points V;                ///< #V×3 vertex positions, LPS mm
+  Triangles F;             ///< #F×3, for display
+  Points centre;           ///< #V×3: each vertex's point on its centerline, LPS mm
+  Points axis;             ///< #V×3: the unit centerline tangent there (downstream)
+  Eigen::VectorXi segment; ///< #V: StentSegment
+  Eigen::VectorXi ring;    ///< #V: ring number within its segment, from the top / the junction
+  Eigen::VectorXi column;  ///< #V: j, the position on the ring
   int verticesPerRing = 0;
   std::vector<std::vector<int>> rings;  ///< vertex ids of each ring, in j order (periodic)
   std::vector<std::vector<int>> chains; ///< s-chains, vertex ids in order along s

@@ -44,11 +44,13 @@ Skeleton ThinLabelMap(const LabelImage& mask, const ProgressCallback& progress)
   // foreground voxel has a full neighbourhood inside the box.
   const std::array<long, 3> lo = found.first;
   MaskGrid box({ found.size[0] + 2, found.size[1] + 2, found.size[2] + 2 });
-  ForEachInBox(found, mask.GetLargestPossibleRegion().GetSize(), [&](long flat, long image) {
-    const long i = flat % found.size[0], j = (flat / found.size[0]) % found.size[1];
-    const long k = flat / (found.size[0] * found.size[1]);
-    box.voxels[box.Flat(i + 1, j + 1, k + 1)] = mask.GetBufferPointer()[image] ? 1 : 0;
-  });
+  ForEachInBox(found, mask.GetLargestPossibleRegion().GetSize(),
+               [&](long flat, long image)
+               {
+                 const long i = flat % found.size[0], j = (flat / found.size[0]) % found.size[1];
+                 const long k = flat / (found.size[0] * found.size[1]);
+                 box.voxels[box.Flat(i + 1, j + 1, k + 1)] = mask.GetBufferPointer()[image] ? 1 : 0;
+               });
   ReportProgress(progress, 0.05, "Distance map");
   const auto spacing = mask.GetSpacing();
   const std::array<double, 3> spacingMm{ spacing[0], spacing[1], spacing[2] };

@@ -35,9 +35,9 @@ namespace sgp
 
 struct Skeleton
 {
-  std::vector<itk::Index<3>> voxels; ///< in the mask's index space
-  std::vector<Point3> pointsLps;     ///< voxel centres, LPS mm
-  std::vector<double> radiusMm;      ///< inscribed-sphere radius at each voxel, mm
+  std::vector<itk::Index<3>> voxels;        ///< in the mask's index space
+  std::vector<Point3> pointsLps;            ///< voxel centres, LPS mm
+  std::vector<double> radiusMm;             ///< inscribed-sphere radius at each voxel, mm
   std::vector<Point3> nearestBackgroundLps; ///< centre of the nearest background voxel, LPS mm
 };
 

@@ -94,9 +94,8 @@ double WallDistanceField::Sample(const Point3& lps, Eigen::Vector3d* gradient) c
       return m_Band;
     }
   }
-  const auto at = [&](int di, int dj, int dk) {
-    return double(m_Phi[(i0[0] + di) + m_Size[0] * ((i0[1] + dj) + m_Size[1] * (i0[2] + dk))]);
-  };
+  const auto at = [&](int di, int dj, int dk)
+  { return double(m_Phi[(i0[0] + di) + m_Size[0] * ((i0[1] + dj) + m_Size[1] * (i0[2] + dk))]); };
   double value = 0.0;
   Eigen::Vector3d g = Eigen::Vector3d::Zero(); // ∂φ/∂(index)
   for (int c = 0; c < 8; ++c)

@@ -32,8 +32,8 @@ public:
 
 private:
   std::array<long, 3> m_Size{};
-  std::vector<float> m_Phi;           ///< m_Size[0]·m_Size[1]·m_Size[2], i fastest
-  Point3 m_Origin = Point3::Zero();   ///< LPS of box voxel (0, 0, 0)
+  std::vector<float> m_Phi;                                   ///< m_Size[0]·m_Size[1]·m_Size[2], i fastest
+  Point3 m_Origin = Point3::Zero();                           ///< LPS of box voxel (0, 0, 0)
   Eigen::Matrix3d m_IndexToLps = Eigen::Matrix3d::Identity(); ///< direction · diag(spacing)
   Eigen::Matrix3d m_LpsToIndex = Eigen::Matrix3d::Identity();
   double m_Band = 10.0;

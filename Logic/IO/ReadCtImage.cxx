@@ -55,7 +55,8 @@ CtImage::Pointer ReadDicomSeries(const std::string& folder, std::vector<std::str
   if (series.size() > 1)
   {
     warnings.push_back("The folder '" + folder + "' holds " + std::to_string(series.size()) +
-                       " DICOM series; read the largest (" + std::to_string(files.size()) + " slices, " + chosen + ").");
+                       " DICOM series; read the largest (" + std::to_string(files.size()) + " slices, " + chosen +
+                       ").");
   }
   if (files.size() < 2)
   {
@@ -108,7 +109,7 @@ itk::ImageIOBase::Pointer OpenVolumeFile(const std::string& path)
   return io;
 }
 
-template <typename Image>
+template<typename Image>
 typename Image::Pointer ReadVolumeFile(const std::string& path)
 {
   auto reader = itk::ImageFileReader<Image>::New();

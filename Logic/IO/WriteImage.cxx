@@ -10,7 +10,7 @@ namespace sgp
 namespace
 {
 
-template <typename Image>
+template<typename Image>
 void Write(const Image& image, const std::string& path)
 {
   try

@@ -39,8 +39,8 @@ void WritePhantomTruth(const AorticPhantom& phantom, const std::string& path)
   const auto size = ct.GetLargestPossibleRegion().GetSize();
   const auto& d = ct.GetDirection();
   json << "{\n  \"frame\": \"LPS\",\n  \"units\": \"mm\",\n";
-  json << "  \"grid\": {\"size\": [" << size[0] << ", " << size[1] << ", " << size[2] << "], \"spacing\": "
-       << Triple(ct.GetSpacing()[0], ct.GetSpacing()[1], ct.GetSpacing()[2])
+  json << "  \"grid\": {\"size\": [" << size[0] << ", " << size[1] << ", " << size[2]
+       << "], \"spacing\": " << Triple(ct.GetSpacing()[0], ct.GetSpacing()[1], ct.GetSpacing()[2])
        << ", \"origin\": " << Triple(ct.GetOrigin()[0], ct.GetOrigin()[1], ct.GetOrigin()[2]) << ", \"direction\": ["
        << Number(d(0, 0)) << ", " << Number(d(1, 0)) << ", " << Number(d(2, 0)) << ", " << Number(d(0, 1)) << ", "
        << Number(d(1, 1)) << ", " << Number(d(2, 1)) << ", " << Number(d(0, 2)) << ", " << Number(d(1, 2)) << ", "

@@ -13,8 +13,11 @@
 namespace sgp
 {
 
-void WriteStentModel(const StentMesh& mesh, const Points& V, const Eigen::VectorXd& radiusMm,
-                     const Eigen::VectorXd& wallDistanceMm, const std::string& path)
+void WriteStentModel(const StentMesh& mesh,
+                     const Points& V,
+                     const Eigen::VectorXd& radiusMm,
+                     const Eigen::VectorXd& wallDistanceMm,
+                     const std::string& path)
 {
   vtkNew<vtkPoints> points;
   vtkNew<vtkIntArray> segment, ring;

@@ -13,7 +13,10 @@
 namespace sgp
 {
 
-void WriteStentModel(const StentMesh& mesh, const Points& V, const Eigen::VectorXd& radiusMm,
-                     const Eigen::VectorXd& wallDistanceMm, const std::string& path);
+void WriteStentModel(const StentMesh& mesh,
+                     const Points& V,
+                     const Eigen::VectorXd& radiusMm,
+                     const Eigen::VectorXd& wallDistanceMm,
+                     const std::string& path);
 
 } // namespace sgp

@@ -84,7 +84,8 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   const double rightRenalZ = siteZ + renalRadiusMm, leftRenalZ = rightRenalZ + 6.0;
   const double smaZ = siteZ + 20.0, coeliacZ = siteZ + 35.0, topZ = siteZ + 80.0;
   const double amplitude = p.maxAneurysmDiameterMm / 2 - 0.5 * (rNeck + rDistal);
-  const auto radiusAtZ = [=](double z) {
+  const auto radiusAtZ = [=](double z)
+  {
     if (z >= sacTop)
       return rNeck;
     if (z < sacBottom)
@@ -102,9 +103,10 @@ Anatomy BuildAnatomy(const PhantomParams& p)
       zMax = z;
     }
   }
-  anatomy.tubes.push_back(
-    { "aorta", { Point3(0, 0, topZ), Point3(0, 0, 0) }, [=](double s) { return radiusAtZ(topZ - s); },
-      std::max({ rNeck, rDistal, rMax }) });
+  anatomy.tubes.push_back({ "aorta",
+                            { Point3(0, 0, topZ), Point3(0, 0, 0) },
+                            [=](double s) { return radiusAtZ(topZ - s); },
+                            std::max({ rNeck, rDistal, rMax }) });
 
   const double angle = commonIliacAngleDeg * pi / 180.0;
   Point3 iliacEnd[2];
@@ -133,8 +135,9 @@ Anatomy BuildAnatomy(const PhantomParams& p)
     truth.landmarks.push_back({ prefix + "RenalOstium", Point3(lateral * rNeck, 0, renalZ) });
     truth.landmarks.push_back({ prefix + "IliacBifurcation", iliacEnd[side] });
   }
-  anatomy.tubes.push_back(StraightTube(
-    "superiorMesenteric", { Point3(0, 0, smaZ), Point3(0, -35, smaZ - 5), Point3(0, -45, smaZ - 60) }, visceralRadiusMm));
+  anatomy.tubes.push_back(StraightTube("superiorMesenteric",
+                                       { Point3(0, 0, smaZ), Point3(0, -35, smaZ - 5), Point3(0, -45, smaZ - 60) },
+                                       visceralRadiusMm));
   anatomy.tubes.push_back(
     StraightTube("coeliac", { Point3(0, 0, coeliacZ), Point3(0, -30, coeliacZ + 5) }, visceralRadiusMm));
   if (p.includeBone)
@@ -275,7 +278,7 @@ Grid MakeGrid(const PhantomParams& p, const std::array<Point3, 2>& bounds)
 }
 
 /// Calls f(flat, lps) for every voxel of the grid whose centre may lie within the LPS box.
-template <typename Function>
+template<typename Function>
 void ForEachVoxelNear(const Grid& grid, const Point3& lo, const Point3& hi, Function f)
 {
   const Eigen::Matrix3d toIndex = grid.IndexToLps().inverse();
@@ -405,19 +408,23 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
       hi = hi.cwiseMax(v + Point3::Constant(tube.maxRadius + reach));
     }
     const double lumenContrast = p.lumenHu - p.tissueHu;
-    ForEachVoxelNear(grid, lo, hi, [&](long flat, const Point3& x) {
-      const double sd = TubeSignedDistance(tube, x);
-      contrast[flat] = std::max(contrast[flat], float(lumenContrast * EdgeProfile(sd, p.blurSigmaMm)));
-      if (sd < 0.0)
-      {
-        labels[flat] = LumenLabel;
-      }
-    });
+    ForEachVoxelNear(grid, lo, hi,
+                     [&](long flat, const Point3& x)
+                     {
+                       const double sd = TubeSignedDistance(tube, x);
+                       contrast[flat] = std::max(contrast[flat], float(lumenContrast * EdgeProfile(sd, p.blurSigmaMm)));
+                       if (sd < 0.0)
+                       {
+                         labels[flat] = LumenLabel;
+                       }
+                     });
   }
   for (const Ellipsoid& kidney : anatomy.kidneys)
   {
     ForEachVoxelNear(grid, kidney.centre - kidney.semiAxes - Point3::Constant(reach),
-                     kidney.centre + kidney.semiAxes + Point3::Constant(reach), [&](long flat, const Point3& x) {
+                     kidney.centre + kidney.semiAxes + Point3::Constant(reach),
+                     [&](long flat, const Point3& x)
+                     {
                        const double sd = EllipsoidSignedDistance(kidney, x);
                        contrast[flat] =
                          std::max(contrast[flat], float((p.kidneyHu - p.tissueHu) * EdgeProfile(sd, p.blurSigmaMm)));
@@ -432,7 +439,8 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
     ReportProgress(progress, 0.75, "Vertebral column");
     const double r = vertebraRadiusMm + reach;
     ForEachVoxelNear(grid, Point3(-r, anatomy.columnY - r, -1e6), Point3(r, anatomy.columnY + r, 1e6),
-                     [&](long flat, const Point3& x) {
+                     [&](long flat, const Point3& x)
+                     {
                        const double rho = std::hypot(x.x(), x.y() - anatomy.columnY);
                        const double outer = rho - vertebraRadiusMm, inner = outer + corticalThicknessMm;
                        const double bone = (corticalHu - p.tissueHu) * EdgeProfile(outer, p.blurSigmaMm) -
@@ -447,10 +455,11 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
 
   ReportProgress(progress, 0.8, "Noise");
   AorticPhantom phantom;
-  const auto makeImage = [&](auto image) {
+  const auto makeImage = [&](auto image)
+  {
     typename decltype(image)::ObjectType::RegionType region;
-    region.SetSize({ { itk::SizeValueType(grid.size[0]), itk::SizeValueType(grid.size[1]),
-                       itk::SizeValueType(grid.size[2]) } });
+    region.SetSize(
+      { { itk::SizeValueType(grid.size[0]), itk::SizeValueType(grid.size[1]), itk::SizeValueType(grid.size[2]) } });
     image->SetRegions(region);
     image->SetSpacing(grid.spacing.data());
     image->SetOrigin(grid.origin.data());

@@ -99,25 +99,25 @@ struct PhantomLandmark
 /// The sizing truth, after Egger et al. (2007) section 2.2 and the lengths the IFUs check (mm).
 struct PhantomSizing
 {
-  double proximalNeckDiameter = 0.0;   ///< (a) at the lower edge of the lowest renal ostium
-  double neckDiameter15mm = 0.0;       ///< (b) 15 mm inferior to (a) along the aorta
-  double maxAneurysmDiameter = 0.0;    ///< (c)
-  double distalNeckMinDiameter = 0.0;  ///< (d) between the sac and the bifurcation
-  double rightIliacDiameter = 0.0;     ///< (e) common iliac
-  double leftIliacDiameter = 0.0;      ///< (f)
-  double proximalNeckLength = 0.0;     ///< lowest renal lower edge to the sac's top
+  double proximalNeckDiameter = 0.0;  ///< (a) at the lower edge of the lowest renal ostium
+  double neckDiameter15mm = 0.0;      ///< (b) 15 mm inferior to (a) along the aorta
+  double maxAneurysmDiameter = 0.0;   ///< (c)
+  double distalNeckMinDiameter = 0.0; ///< (d) between the sac and the bifurcation
+  double rightIliacDiameter = 0.0;    ///< (e) common iliac
+  double leftIliacDiameter = 0.0;     ///< (f)
+  double proximalNeckLength = 0.0;    ///< lowest renal lower edge to the sac's top
   double proximalSiteToBifurcationLength = 0.0;
-  double rightIliacLength = 0.0;       ///< aortic bifurcation to the right internal iliac origin
+  double rightIliacLength = 0.0; ///< aortic bifurcation to the right internal iliac origin
   double leftIliacLength = 0.0;
 };
 
 struct PhantomTruth
 {
-  std::vector<PhantomVessel> vessels;   ///< aorta first, then iliacs and side branches
+  std::vector<PhantomVessel> vessels; ///< aorta first, then iliacs and side branches
   std::vector<PhantomLandmark> landmarks;
   PhantomSizing sizing;
-  Point3 seedLps = Point3::Zero();      ///< in the aneurysm lumen, 0.5 mm off the axis
-  double lumenVolumeMl = 0.0;           ///< lumen voxels × voxel volume
+  Point3 seedLps = Point3::Zero(); ///< in the aneurysm lumen, 0.5 mm off the axis
+  double lumenVolumeMl = 0.0;      ///< lumen voxels × voxel volume
 };
 
 struct AorticPhantom

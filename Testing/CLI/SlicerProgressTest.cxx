@@ -99,9 +99,8 @@ TEST(CliEdge, ValidateParameters_NamesWhatIsMissing)
 TEST(CliEdge, MakeActiveContourParams_ModeAndCounts)
 {
   const std::vector<double> five{ 0.1, 0.2, 0.3, 0.4, 0.5 }, three{ 24, 12, 14 };
-  const auto make = [&](const std::string& mode, const std::vector<double>& weights, const std::vector<double>& d) {
-    return MakeActiveContourParams(mode, weights, 60, 0.02, d, weights, 5, 0.15, 5, 1, 100, 0.01);
-  };
+  const auto make = [&](const std::string& mode, const std::vector<double>& weights, const std::vector<double>& d)
+  { return MakeActiveContourParams(mode, weights, 60, 0.02, d, weights, 5, 0.15, 5, 1, 100, 0.01); };
   const ActiveContourParams simulate = make("simulate", five, three);
   EXPECT_EQ(simulate.balloonRadiusMm, (std::array<double, 3>{ 12, 6, 7 })); // R is half the diameter
   EXPECT_EQ(simulate.weights.w3, 0.3);

@@ -13,8 +13,8 @@ namespace
 TEST(StentGraftSimulationXml, Defaults_EqualRegionGrowingParams)
 {
   GENERATE_DECLARE;
-  const RegionGrowingParams fromXml = MakeRegionGrowingParams(
-    thresholdMode, lowerHu, upperHu, windowSigmas, seedMinimumHu, leakOpeningRadiusMm, maximumLumenVolumeMl);
+  const RegionGrowingParams fromXml = MakeRegionGrowingParams(thresholdMode, lowerHu, upperHu, windowSigmas,
+                                                              seedMinimumHu, leakOpeningRadiusMm, maximumLumenVolumeMl);
   const RegionGrowingParams defaults;
   EXPECT_EQ(fromXml.thresholdMode, defaults.thresholdMode);
   EXPECT_EQ(fromXml.lowerHu, defaults.lowerHu);
@@ -32,12 +32,14 @@ TEST(StentGraftSimulationXml, Defaults_EqualRegionGrowingParams)
   EXPECT_EQ(mesh.ringSpacingMm, StentMeshParams{}.ringSpacingMm);
   EXPECT_EQ(mesh.startRadiusMm, StentMeshParams{}.startRadiusMm);
   EXPECT_EQ(mesh.proximalAbscissaMm, StentMeshParams{}.proximalAbscissaMm);
-  const auto acm = [&](const char* mode) {
+  const auto acm = [&](const char* mode)
+  {
     return MakeActiveContourParams(mode, measureStiffnessWeights, measureBalloonRadiusMm, measureBalloonPressure,
                                    stentDiametersMm, stentStiffnessWeights, stentBalloonPressure, acmTau, wallWeight,
                                    wallSofteningMm, acmMaxIterations, acmToleranceMm);
   };
-  const auto same = [](const ActiveContourParams& a, const ActiveContourParams& b) {
+  const auto same = [](const ActiveContourParams& a, const ActiveContourParams& b)
+  {
     EXPECT_EQ(a.weights.w1, b.weights.w1);
     EXPECT_EQ(a.weights.w3, b.weights.w3);
     EXPECT_EQ(a.weights.w5, b.weights.w5);

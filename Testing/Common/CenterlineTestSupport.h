@@ -35,8 +35,10 @@ struct AxisAgreement
   double meanSignedRadiusErrorMm = 0.0;
 };
 
-inline AxisAgreement CompareWithAxes(const Centerline& c, const PhantomTruth& truth,
-                                     const std::vector<std::string>& vessels, double skipFromStartMm = 0.0,
+inline AxisAgreement CompareWithAxes(const Centerline& c,
+                                     const PhantomTruth& truth,
+                                     const std::vector<std::string>& vessels,
+                                     double skipFromStartMm = 0.0,
                                      double skipFromEndMm = 0.0)
 {
   AxisAgreement a;

@@ -32,7 +32,8 @@ struct Capsule
 
 /// A label image of the union of capsules, on a grid with the given spacing and direction whose
 /// extent covers them with a margin of 3 mm.
-inline LabelImage::Pointer PaintCapsules(const std::vector<Capsule>& capsules, const std::array<double, 3>& spacing,
+inline LabelImage::Pointer PaintCapsules(const std::vector<Capsule>& capsules,
+                                         const std::array<double, 3>& spacing,
                                          const Eigen::Matrix3d& direction = Eigen::Matrix3d::Identity())
 {
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e9), hi = -lo;

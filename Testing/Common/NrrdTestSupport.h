@@ -25,8 +25,8 @@ inline void WriteNrrdInRasSpace(const CtImage& image, const std::string& path)
       << " " << size[2] << "\nspace directions:";
   for (int axis = 0; axis < 3; ++axis)
     out << " (" << -d(0, axis) * s[axis] << "," << -d(1, axis) * s[axis] << "," << d(2, axis) * s[axis] << ")";
-  out << "\nkinds: domain domain domain\nendian: little\nencoding: raw\nspace origin: (" << -o[0] << "," << -o[1]
-      << "," << o[2] << ")\n\n";
+  out << "\nkinds: domain domain domain\nendian: little\nencoding: raw\nspace origin: (" << -o[0] << "," << -o[1] << ","
+      << o[2] << ")\n\n";
   out.write(reinterpret_cast<const char*>(image.GetBufferPointer()),
             static_cast<std::streamsize>(image.GetLargestPossibleRegion().GetNumberOfPixels() * sizeof(short)));
 }

@@ -14,11 +14,11 @@ namespace sgp::testing
 /// Voxel counts of a binary segmentation against the truth labels.
 struct Overlap
 {
-  long truthLumen = 0;                ///< voxels labelled lumen in the truth
-  long segmented = 0;                 ///< voxels set in the segmentation
-  long both = 0;                      ///< set in both
-  std::array<long, 4> perLabel{};     ///< segmented voxels per truth label
-  std::array<long, 4> labelCount{};   ///< truth voxels per label
+  long truthLumen = 0;              ///< voxels labelled lumen in the truth
+  long segmented = 0;               ///< voxels set in the segmentation
+  long both = 0;                    ///< set in both
+  std::array<long, 4> perLabel{};   ///< segmented voxels per truth label
+  std::array<long, 4> labelCount{}; ///< truth voxels per label
 
   double Dice() const { return 2.0 * double(both) / double(truthLumen + segmented); }
   /// Fraction of the truth voxels of `label` that were segmented.

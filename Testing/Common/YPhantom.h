@@ -33,7 +33,9 @@ inline YPhantom MakeYPhantom(double spacingMm, double aortaRadius = 10.0, double
 {
   YPhantom y;
   const Point3 top(0, 0, 140), bifurcation(0, 0, 40), right(-30, 0, -40), left(30, 0, -40);
-  y.capsules = { { top, bifurcation, aortaRadius }, { bifurcation, right, iliacRadius }, { bifurcation, left, iliacRadius } };
+  y.capsules = { { top, bifurcation, aortaRadius },
+                 { bifurcation, right, iliacRadius },
+                 { bifurcation, left, iliacRadius } };
   y.tree.aorta = StraightCenterline("aorta", top, bifurcation, aortaRadius);
   y.tree.rightIliac = StraightCenterline("rightIliac", bifurcation, right, iliacRadius);
   y.tree.leftIliac = StraightCenterline("leftIliac", bifurcation, left, iliacRadius);

@@ -27,7 +27,6 @@ namespace fs = std::filesystem;
 class ReadCtImageTest : public testing::TemporaryFolderTest
 {
 protected:
-
   /// 20 × 16 × 12 voxels of distinct values on an anisotropic grid; `oblique` rotates it.
   static CtImage::Pointer MakeRamp(bool oblique)
   {
@@ -56,7 +55,7 @@ protected:
     return image;
   }
 
-  template <typename Image>
+  template<typename Image>
   static void Write(const Image* image, const fs::path& path, bool compress = true)
   {
     auto writer = itk::ImageFileWriter<Image>::New();
@@ -101,7 +100,6 @@ protected:
     }
     return "(no InputError)";
   }
-
 };
 
 // ITK stores NRRD and MetaImage geometry as decimal text: exact to 1e-6 of a voxel.
@@ -112,9 +110,9 @@ constexpr double niftiGeometryTolerance = 1e-4;
 TEST_F(ReadCtImageTest, EveryFileFormat_SamePhysicalVolume)
 {
   const auto ramp = MakeRamp(true);
-  const std::vector<std::pair<std::string, bool>> files{
-    { "ramp.nrrd", true }, { "ramp-raw.nrrd", false }, { "ramp.nii", false },
-    { "ramp.nii.gz", true }, { "ramp.mha", true },     { "ramp.mhd", false } };
+  const std::vector<std::pair<std::string, bool>> files{ { "ramp.nrrd", true }, { "ramp-raw.nrrd", false },
+                                                         { "ramp.nii", false }, { "ramp.nii.gz", true },
+                                                         { "ramp.mha", true },  { "ramp.mhd", false } };
   for (const auto& [name, compress] : files)
   {
     SCOPED_TRACE(name);
@@ -153,7 +151,9 @@ TEST_F(ReadCtImageTest, NrrdStoredInRasSpace_SamePhysicalVolumeAsLps)
 }
 
 /// Writes `image` as a DICOM CT series of one file per slice into `folder`.
-void WriteDicomSeries(const CtImage::Pointer& image, const fs::path& folder, const std::string& seriesUid,
+void WriteDicomSeries(const CtImage::Pointer& image,
+                      const fs::path& folder,
+                      const std::string& seriesUid,
                       const std::string& prefix)
 {
   using Slice = itk::Image<short, 2>;
@@ -232,8 +232,8 @@ TEST_F(ReadCtImageTest, SingleDicomSlice_InputErrorSays2D)
   {
     fs::remove(folder / (std::string("slice") + c + ".dcm"));
   }
-  EXPECT_EQ(MessageOf(folder.string()), "The input volume '" + folder.string() +
-                                          "' is 2-D (a DICOM series of 1 slice); expected a 3-D CT volume.");
+  EXPECT_EQ(MessageOf(folder.string()),
+            "The input volume '" + folder.string() + "' is 2-D (a DICOM series of 1 slice); expected a 3-D CT volume.");
 }
 
 TEST_F(ReadCtImageTest, FloatPixels_AcceptedAsHu)
@@ -284,15 +284,14 @@ TEST_F(ReadCtImageTest, RgbImage_InputErrorNamesComponents)
   image->Allocate(true);
   const fs::path path = folder / "rgb.mha";
   Write(image.GetPointer(), path);
-  EXPECT_NE(MessageOf(path.string()).find("has 3 components per voxel"), std::string::npos)
-    << MessageOf(path.string());
+  EXPECT_NE(MessageOf(path.string()).find("has 3 components per voxel"), std::string::npos) << MessageOf(path.string());
 }
 
 TEST_F(ReadCtImageTest, MissingFile_InputErrorNamesPath)
 {
   const std::string path = (folder / "absent.nrrd").string();
-  EXPECT_EQ(MessageOf(path), "Cannot read the input volume '" + path +
-                               "': the file does not exist; give a readable 3-D CT volume.");
+  EXPECT_EQ(MessageOf(path),
+            "Cannot read the input volume '" + path + "': the file does not exist; give a readable 3-D CT volume.");
 }
 
 TEST_F(ReadCtImageTest, GarbageFile_InputErrorNamesPath)

@@ -30,7 +30,6 @@ namespace fs = std::filesystem;
 class WriteOutputsTest : public testing::TemporaryFolderTest
 {
 protected:
-
   std::vector<std::string> Listing() const
   {
     std::vector<std::string> names;
@@ -58,7 +57,6 @@ protected:
     polyData->SetPoints(points);
     return polyData;
   }
-
 };
 
 TEST_F(WriteOutputsTest, VtpModel_CarriesSpaceLpsAndPointsUnchanged)
@@ -104,7 +102,8 @@ TEST_F(WriteOutputsTest, ModelWithUnknownExtension_InputError)
   }
   catch (const InputError& e)
   {
-    EXPECT_EQ(std::string(e.what()), "Cannot write the model '" + path + "': unknown extension; expected .vtp or .vtk.");
+    EXPECT_EQ(std::string(e.what()),
+              "Cannot write the model '" + path + "': unknown extension; expected .vtp or .vtk.");
   }
   EXPECT_TRUE(Listing().empty());
 }

@@ -75,7 +75,7 @@ TEST_F(YPhantomFit, MeasureMode_BothLegsReachTheirRadii)
 
 TEST_F(YPhantomFit, OneFactorizationAndTinyResiduals)
 {
-  EXPECT_GT(measure->iterations, 10); // many steps…
+  EXPECT_GT(measure->iterations, 10);    // many steps…
   EXPECT_EQ(measure->factorizations, 1); // …one factorization
   EXPECT_LT(measure->maxRelativeResidual, 1e-10);
 }
@@ -113,8 +113,7 @@ TEST_F(YPhantomFit, SimulateModeBelowTheVesselRadius_StopsAtR)
 TEST_F(YPhantomFit, MeasureMode_EnergyNeverIncreases)
 {
   for (std::size_t i = 1; i < measure->energy.size(); ++i)
-    ASSERT_LE(measure->energy[i], measure->energy[i - 1] + 1e-12 * std::abs(measure->energy.front()))
-      << "step " << i;
+    ASSERT_LE(measure->energy[i], measure->energy[i - 1] + 1e-12 * std::abs(measure->energy.front())) << "step " << i;
   EXPECT_LT(measure->energy.back(), 0.2 * measure->energy.front());
 }
 
@@ -122,8 +121,7 @@ TEST(ActiveContour, AneurysmPhantom_SurfaceFollowsTheSacToItsWidest)
 {
   PhantomParams pp; // 0.8 × 0.8 × 1.0 mm, noise 20 HU
   const AorticPhantom phantom = GenerateAorticPhantom(pp);
-  const LabelImage::Pointer lumen =
-    GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, RegionGrowingParams{}).mask;
+  const LabelImage::Pointer lumen = GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, RegionGrowingParams{}).mask;
   const CenterlineTree tree = testing::CenterlinesFromMask(*lumen);
   const StentMesh mesh = BuildStentMesh(tree); // the trunk starts below the lowest renal artery
   const WallDistanceField wall = WallDistanceField::FromLumen(*lumen);

@@ -150,8 +150,14 @@ TEST(AorticPhantom, ParameterOutOfRange_InputErrorNamesIt)
 {
   const std::vector<std::pair<std::string, std::function<void(PhantomParams&)>>> cases{
     { "spacingMm (k) is 0.10 mm", [](auto& p) { p.spacingMm[2] = 0.1; } },
-    { "sizeVoxels (j) is 8.00 voxels", [](auto& p) { p.sizeVoxels = { 100, 8, 100 }; } },
-    { "sizeVoxels must be 0,0,0", [](auto& p) { p.sizeVoxels = { 100, 0, 0 }; } },
+    { "sizeVoxels (j) is 8.00 voxels",
+      [](auto& p) {
+        p.sizeVoxels = { 100, 8, 100 };
+      } },
+    { "sizeVoxels must be 0,0,0",
+      [](auto& p) {
+        p.sizeVoxels = { 100, 0, 0 };
+      } },
     { "directionLps is not orthonormal", [](auto& p) { p.directionLps(0, 1) = 0.5; } },
     { "neckDiameterMm is 5.00 mm", [](auto& p) { p.neckDiameterMm = 5; } },
     { "neckLengthMm is 1.00 mm", [](auto& p) { p.neckLengthMm = 1; } },

@@ -115,7 +115,7 @@ TEST_F(AneurysmPhantomCenterlines, VesselsRunTheRightWay)
   const Point3 bifurcation = tree->FindLandmark("aorticBifurcation")->lps;
   EXPECT_LT((bifurcation - Point3::Zero()).norm(), 5.0); // the analytic branching point, within a radius
   const Centerline& aorta = tree->aorta;
-  EXPECT_GT(aorta.points(0, 2), bifurcation.z() + 150.0);            // from the top down
+  EXPECT_GT(aorta.points(0, 2), bifurcation.z() + 150.0); // from the top down
   EXPECT_LT((aorta.points.row(aorta.Size() - 1).transpose() - bifurcation).norm(), 1e-9);
   EXPECT_LT(tree->rightIliac.points(tree->rightIliac.Size() - 1, 0), -20.0); // patient right: −x
   EXPECT_GT(tree->leftIliac.points(tree->leftIliac.Size() - 1, 0), 20.0);

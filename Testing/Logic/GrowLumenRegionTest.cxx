@@ -121,8 +121,7 @@ TEST(GrowLumenRegion, ManualWindowBelowKidneyHu_FloodDetected)
   params.thresholdMode = ThresholdMode::Manual;
   params.lowerHu = 120.0; // below the kidneys' 180 HU: growing floods them through the renal arteries
   params.upperHu = 600.0;
-  const std::string message =
-    MessageOf([&] { GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, params); });
+  const std::string message = MessageOf([&] { GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, params); });
   EXPECT_NE(message.find("leaked into darker tissue"), std::string::npos) << message;
   EXPECT_NE(message.find("now 120 HU"), std::string::npos) << message;
   EXPECT_THROW(GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, params), AlgorithmError);
@@ -143,9 +142,9 @@ TEST(GrowLumenRegion, BlockBehindOneVoxelBridge_CutAndWarned)
     for (long j = 0; j < 80; ++j)
       for (long i = 0; i < 80; ++i)
       {
-        const bool cylinder = (i - 25) * (i - 25) + (j - 40) * (j - 40) <= 64; // radius 8 mm
+        const bool cylinder = (i - 25) * (i - 25) + (j - 40) * (j - 40) <= 64;          // radius 8 mm
         const bool block = i >= 50 && i < 74 && j >= 28 && j < 52 && k >= 18 && k < 42; // 13.8 mL
-        const bool bridge = i > 32 && i < 50 && j == 40 && k == 30;           // 1 × 1 voxel
+        const bool bridge = i > 32 && i < 50 && j == 40 && k == 30;                     // 1 × 1 voxel
         blockVoxels += block;
         if (cylinder || block || bridge)
         {
@@ -187,7 +186,7 @@ TEST(GrowLumenRegion, DarkVoxelBesideTheSeed_GrowsFromTheNearestInteriorVoxel)
   ct->SetPixel({ { 21, 20, 20 } }, 100); // beside the seed voxel (20, 20, 20)
   const LumenSegmentation lumen = GrowLumenRegion(*ct, Point3(20, 20, 20), RegionGrowingParams{});
   EXPECT_EQ(lumen.mask->GetPixel({ { 21, 20, 20 } }), 1); // the cavity is filled
-  EXPECT_NEAR(lumen.volumeMl, 40 * 197 / 1000.0, 0.01);  // the whole tube, 40 slices of 197 voxels
+  EXPECT_NEAR(lumen.volumeMl, 40 * 197 / 1000.0, 0.01);   // the whole tube, 40 slices of 197 voxels
 }
 
 TEST(GrowLumenRegion, RunOffBeyondAStenosisNarrowerThanTheBall_Kept)

@@ -50,8 +50,8 @@ int CountDegree(const SkeletonGraph& g, int degree)
 
 TEST(SkeletonGraph, ShortSpur_PrunedAndLineJoined)
 {
-  auto voxels = Line({ 10, 40, 40 }, { 1, 0, 0 }, 41);      // 40 mm along x
-  const auto spur = Line({ 30, 41, 40 }, { 0, 1, 0 }, 6);  // 6 mm < 2 × radius 5
+  auto voxels = Line({ 10, 40, 40 }, { 1, 0, 0 }, 41);    // 40 mm along x
+  const auto spur = Line({ 30, 41, 40 }, { 0, 1, 0 }, 6); // 6 mm < 2 × radius 5
   voxels.insert(voxels.end(), spur.begin(), spur.end());
   const DrawnSkeleton drawn(voxels, 5.0);
   const SkeletonGraph g = BuildSkeletonGraph(drawn.skeleton, *drawn.grid);

@@ -41,8 +41,10 @@ TEST(StentMesh, Rings_PerpendicularAtStartRadiusWithoutTwist)
     EXPECT_LT(a.normalized().y(), -0.999); // column n/4 is anterior (−y in LPS)
   }
   // Each leg: column n/2 lateral (away from the other leg), n/4 anterior.
-  const Eigen::Vector3d rightLateral = (mesh.V.row(mesh.Id(1, 0, n / 2)) - mesh.centre.row(mesh.Id(1, 0, n / 2))).transpose();
-  const Eigen::Vector3d leftLateral = (mesh.V.row(mesh.Id(2, 0, n / 2)) - mesh.centre.row(mesh.Id(2, 0, n / 2))).transpose();
+  const Eigen::Vector3d rightLateral =
+    (mesh.V.row(mesh.Id(1, 0, n / 2)) - mesh.centre.row(mesh.Id(1, 0, n / 2))).transpose();
+  const Eigen::Vector3d leftLateral =
+    (mesh.V.row(mesh.Id(2, 0, n / 2)) - mesh.centre.row(mesh.Id(2, 0, n / 2))).transpose();
   EXPECT_LT(rightLateral.x(), -3.0);
   EXPECT_GT(leftLateral.x(), 3.0);
   EXPECT_LT((mesh.V.row(mesh.Id(2, 0, n / 4)) - mesh.centre.row(mesh.Id(2, 0, n / 4)))(1), -3.9);
@@ -106,8 +108,9 @@ TEST(StentMesh, Crotch_NoSelfIntersection)
         const int x = mesh.F(g, 0), y = mesh.F(g, 1), z = mesh.F(g, 2);
         if (a == x || a == y || a == z || b == x || b == y || b == z)
           continue;
-        crossings += SegmentCrossesTriangle(mesh.V.row(a).transpose(), mesh.V.row(b).transpose(), mesh.V.row(x).transpose(),
-                                            mesh.V.row(y).transpose(), mesh.V.row(z).transpose());
+        crossings +=
+          SegmentCrossesTriangle(mesh.V.row(a).transpose(), mesh.V.row(b).transpose(), mesh.V.row(x).transpose(),
+                                 mesh.V.row(y).transpose(), mesh.V.row(z).transpose());
       }
     }
   EXPECT_EQ(crossings, 0);
@@ -136,7 +139,8 @@ TEST(StentMesh, Chains_EveryVertexOnOneChainTwoStepsDeepAcrossTheJunction)
       EXPECT_LE(i + 2, int(mesh.chains[c].size()) - 1);
     }
   // The right half of the trunk continues into the right leg, the crotch joins the legs.
-  const auto follows = [&](int a, int b) {
+  const auto follows = [&](int a, int b)
+  {
     for (const auto& chain : mesh.chains)
       for (std::size_t i = 0; i + 1 < chain.size(); ++i)
         if (chain[i] == a && chain[i + 1] == b)

@@ -104,7 +104,8 @@ TEST(StiffnessMatrix, EqualsFiniteDifferenceHessianOfTheInternalEnergy)
   for (Eigen::Index i = 0; i < n; i += 3)
     for (Eigen::Index j = 0; j < n; j += 5)
     {
-      const auto energy = [&](double di, double dj) {
+      const auto energy = [&](double di, double dj)
+      {
         Points W = V;
         W(i, 0) += di;
         W(j, 0) += dj;

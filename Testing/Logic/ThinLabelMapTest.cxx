@@ -27,8 +27,11 @@ double VoxelDiagonal(const LabelImage& image)
 
 /// The guarantees every skeleton must meet: inside the mask, thin, and (for a shape whose curve
 /// skeleton is the union of the capsules' axes) near the axes.
-void ExpectSkeletonOf(const std::vector<Capsule>& capsules, const LabelImage& mask, const Skeleton& skeleton,
-                      int ends, int junctions)
+void ExpectSkeletonOf(const std::vector<Capsule>& capsules,
+                      const LabelImage& mask,
+                      const Skeleton& skeleton,
+                      int ends,
+                      int junctions)
 {
   ASSERT_FALSE(skeleton.voxels.empty());
   for (const auto& v : skeleton.voxels)
@@ -151,9 +154,8 @@ std::array<int, 3> Topology(const std::vector<int>& mask, int n)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
         padded[(i + 1) + m * ((j + 1) + m * (k + 1))] = mask[i + n * (j + n * k)];
-  const auto cube = [&](int i, int j, int k) {
-    return i >= 0 && j >= 0 && k >= 0 && i < m && j < m && k < m && padded[i + m * (j + m * k)];
-  };
+  const auto cube = [&](int i, int j, int k)
+  { return i >= 0 && j >= 0 && k >= 0 && i < m && j < m && k < m && padded[i + m * (j + m * k)]; };
   int foreground = 0, background = 0;
   for (int start = 0; start < m * m * m; ++start)
   {
