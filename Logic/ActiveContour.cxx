@@ -37,7 +37,10 @@ double EffectiveWallDistance(const StentMesh& mesh,
     const Eigen::Vector3d m =
       mesh.segment[i] == RightLegSegment ? mesh.crotchNormal : Eigen::Vector3d(-mesh.crotchNormal);
     const double beyond = (v - mesh.crotchPoint).dot(m);
-    if (beyond > phi)
+    // Only for the leg's medial side (its radial direction toward the other leg): where a tortuous
+    // iliac swings across the plane, its lateral side must answer to the real wall alone.
+    const bool medial = RadialOffset(mesh, i, v).dot(m) > 0.0;
+    if (beyond > phi && medial)
     {
       phi = beyond;
       if (gradient)

@@ -25,8 +25,10 @@
 /// The flow divider: where the iliacs leave the aorta their lumens overlap, and the balloon would
 /// push each leg's medial side into the other leg. The plane midway between the legs' first rings
 /// (StentMesh::crotchPoint, crotchNormal) is where the two legs of a graft meet, so beyond it a leg
-/// vertex feels the wall force as if the plane were the wall: D there is the larger of the wall
-/// distance and the distance past the plane.
+/// vertex on its medial side (radial direction toward the other leg) feels the wall force as if the
+/// plane were the wall: D there is the larger of the wall distance and the distance past the plane.
+/// (A tortuous iliac may swing across the plane farther down; its lateral side then answers to the
+/// real wall alone.)
 ///
 /// Position along the vessel: internal energy and balloon are blind to sliding along the vessel
 /// (translations cost nothing), so a weak spring −k_a ((v − c)·a) a holds each vertex near its
