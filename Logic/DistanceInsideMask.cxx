@@ -41,30 +41,55 @@ DistanceField DistanceInsideMask(const MaskGrid& mask,
   const auto isBackground = [&](long i, long j, long k)
   { return outside(i, j, k) ? outsideIsBackground : !mask.voxels[mask.Flat(i, j, k)]; };
 
+  // Seeds: each foreground voxel with a background 26-neighbour, at the distance to the nearest
+  // one. Found from whichever side is smaller: the band outside a lumen is mostly foreground.
+  const auto offer = [&](long flat, const std::array<long, 3>& p, const std::array<long, 3>& q)
+  {
+    const float d = length(p, { int(q[0]), int(q[1]), int(q[2]) });
+    if (d < distance[flat])
+    {
+      distance[flat] = d;
+      site[flat] = { int(q[0]), int(q[1]), int(q[2]) };
+    }
+  };
+  long foreground = 0;
+  for (long flat = 0; flat < mask.Count(); ++flat)
+    if (mask.voxels[flat])
+    {
+      distance[flat] = infinity;
+      ++foreground;
+    }
+  const bool fromBackground = mask.Count() - foreground < foreground;
   for (long flat = 0; flat < mask.Count(); ++flat)
   {
-    if (!mask.voxels[flat])
-      continue;
-    distance[flat] = infinity;
+    const bool fg = mask.voxels[flat] != 0;
     const auto p = mask.Ijk(flat);
+    const bool border = p[0] == 0 || p[1] == 0 || p[2] == 0 || p[0] == mask.size[0] - 1 ||
+                        p[1] == mask.size[1] - 1 || p[2] == mask.size[2] - 1;
+    // From the background side, a foreground voxel still has to look outside the box itself.
+    if (fg && (fromBackground ? !(border && outsideIsBackground) : false))
+      continue;
+    if (!fg && !fromBackground)
+      continue;
     for (int dk = -1; dk <= 1; ++dk)
       for (int dj = -1; dj <= 1; ++dj)
         for (int di = -1; di <= 1; ++di)
         {
           const std::array<long, 3> q{ p[0] + di, p[1] + dj, p[2] + dk };
-          if (isBackground(q[0], q[1], q[2]))
+          if (fg)
           {
-            const float d = length(p, { int(q[0]), int(q[1]), int(q[2]) });
-            if (d < distance[flat])
-            {
-              distance[flat] = d;
-              site[flat] = { int(q[0]), int(q[1]), int(q[2]) };
-            }
+            if ((fromBackground ? outside(q[0], q[1], q[2]) && outsideIsBackground : isBackground(q[0], q[1], q[2])))
+              offer(flat, p, q);
+          }
+          else if (!outside(q[0], q[1], q[2]) && mask.voxels[mask.Flat(q[0], q[1], q[2])])
+          {
+            offer(mask.Flat(q[0], q[1], q[2]), q, p);
           }
         }
-    if (distance[flat] < infinity)
-      queue.push({ distance[flat], flat });
   }
+  for (long flat = 0; flat < mask.Count(); ++flat)
+    if (mask.voxels[flat] && distance[flat] < infinity)
+      queue.push({ distance[flat], flat });
 
   while (!queue.empty())
   {

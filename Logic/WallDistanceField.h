@@ -25,7 +25,7 @@ namespace sgp
 class WallDistanceField
 {
 public:
-  static WallDistanceField FromLumen(const LabelImage& lumen, double bandMm = 10.0);
+  static WallDistanceField FromLumen(const LabelImage& lumen, double bandMm = 5.0);
 
   /// φ at `lps` (mm); writes ∇φ (LPS, dimensionless) to `gradient` when it is given.
   double Sample(const Point3& lps, Eigen::Vector3d* gradient = nullptr) const;
@@ -36,7 +36,7 @@ private:
   Point3 m_Origin = Point3::Zero();                           ///< LPS of box voxel (0, 0, 0)
   Eigen::Matrix3d m_IndexToLps = Eigen::Matrix3d::Identity(); ///< direction · diag(spacing)
   Eigen::Matrix3d m_LpsToIndex = Eigen::Matrix3d::Identity();
-  double m_Band = 10.0;
+  double m_Band = 5.0;
 };
 
 } // namespace sgp
