@@ -220,33 +220,50 @@ std::vector<int> LabelComponents(const MaskGrid& mask, std::vector<long>& sizes)
 
 void FillHoles(MaskGrid& mask)
 {
-  std::vector<std::uint8_t> outside(mask.voxels.size(), 0);
-  std::vector<long> queue;
-  for (long k = 0; k < mask.size[2]; ++k)
+  // Flood the outside from a one-voxel shell of background around the box. In the padded grid
+  // every voxel of the box has all six neighbours, so a step is a flat offset with no bounds
+  // check (a step that wraps across a row only ever joins shell voxels, which are all outside).
+  const long px = mask.size[0] + 2, py = mask.size[1] + 2, pz = mask.size[2] + 2;
+  const long count = px * py * pz;
+  enum : std::uint8_t
   {
+    Unreached = 0,
+    Foreground = 1,
+    Outside = 2
+  };
+  std::vector<std::uint8_t> state(static_cast<std::size_t>(count), Unreached);
+  for (long k = 0; k < mask.size[2]; ++k)
     for (long j = 0; j < mask.size[1]; ++j)
     {
+      const long row = mask.Flat(0, j, k), padded = 1 + px * ((j + 1) + py * (k + 1));
       for (long i = 0; i < mask.size[0]; ++i)
+        state[padded + i] = mask.voxels[row + i] ? Foreground : Unreached;
+    }
+  const long steps[6] = { 1, -1, px, -px, px * py, -px * py };
+  std::vector<long> stack{ 0 };
+  state[0] = Outside;
+  while (!stack.empty())
+  {
+    const long v = stack.back();
+    stack.pop_back();
+    for (const long step : steps)
+    {
+      const long n = v + step;
+      if (n >= 0 && n < count && state[n] == Unreached)
       {
-        const bool border =
-          i == 0 || j == 0 || k == 0 || i == mask.size[0] - 1 || j == mask.size[1] - 1 || k == mask.size[2] - 1;
-        const long flat = mask.Flat(i, j, k);
-        if (border && !mask.voxels[flat])
-        {
-          outside[flat] = 1;
-          queue.push_back(flat);
-        }
+        state[n] = Outside;
+        stack.push_back(n);
       }
     }
   }
-  Flood(mask, 0, queue, outside);
-  for (long flat = 0; flat < mask.Count(); ++flat)
-  {
-    if (!outside[flat])
+  for (long k = 0; k < mask.size[2]; ++k)
+    for (long j = 0; j < mask.size[1]; ++j)
     {
-      mask.voxels[flat] = 1;
+      const long row = mask.Flat(0, j, k), padded = 1 + px * ((j + 1) + py * (k + 1));
+      for (long i = 0; i < mask.size[0]; ++i)
+        if (state[padded + i] == Unreached)
+          mask.voxels[row + i] = 1;
     }
-  }
 }
 
 void FillSurfacePits(MaskGrid& mask, int minimumFaceNeighbours)
