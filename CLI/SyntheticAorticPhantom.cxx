@@ -26,6 +26,7 @@ int main(int argc, char* argv[])
     p.maxAneurysmDiameterMm = maxAneurysmDiameterMm;
     p.aneurysmLengthMm = aneurysmLengthMm;
     p.distalNeckDiameterMm = distalNeckDiameterMm;
+    p.neckAngleDeg = neckAngleDeg;
     p.rightIliacDiameterMm = rightIliacDiameterMm;
     p.leftIliacDiameterMm = leftIliacDiameterMm;
     p.lumenHu = lumenHu;

@@ -58,7 +58,8 @@ void WritePhantomTruth(const AorticPhantom& phantom, const std::string& path)
        << ", \"proximalNeckLength\": " << Number(s.proximalNeckLength)
        << ", \"proximalSiteToBifurcationLength\": " << Number(s.proximalSiteToBifurcationLength)
        << ", \"rightIliacLength\": " << Number(s.rightIliacLength)
-       << ", \"leftIliacLength\": " << Number(s.leftIliacLength) << "},\n";
+       << ", \"leftIliacLength\": " << Number(s.leftIliacLength)
+       << ", \"neckAngleBetaDeg\": " << Number(s.neckAngleBetaDeg) << "},\n";
   json << "  \"landmarks\": {";
   for (std::size_t i = 0; i < truth.landmarks.size(); ++i)
   {

@@ -103,8 +103,16 @@ Anatomy BuildAnatomy(const PhantomParams& p)
       zMax = z;
     }
   }
+  // The sac's axis is vertical; above the sac the neck leans anteriorly by the neck angle β.
+  // onAxis(h) is the point at height h along the straight model, carried onto the bent axis (arc
+  // length is kept, so the radius profile and every length along the aorta are unchanged).
+  const double beta = p.neckAngleDeg * pi / 180.0;
+  const Eigen::Vector3d neckDirection(0.0, -std::sin(beta), std::cos(beta));
+  const auto onAxis = [=](double h) {
+    return h <= sacTop ? Point3(0, 0, h) : Point3(Point3(0, 0, sacTop) + (h - sacTop) * neckDirection);
+  };
   anatomy.tubes.push_back({ "aorta",
-                            { Point3(0, 0, topZ), Point3(0, 0, 0) },
+                            { onAxis(topZ), onAxis(sacTop), Point3(0, 0, 0) },
                             [=](double s) { return radiusAtZ(topZ - s); },
                             std::max({ rNeck, rDistal, rMax }) });
 
@@ -126,20 +134,20 @@ Anatomy BuildAnatomy(const PhantomParams& p)
                                          { iliacEnd[side], iliacEnd[side] + 40.0 * Unit(lateral * 0.45, 0.55, -0.7) },
                                          0.55 * r));
     const double renalZ = side == 0 ? rightRenalZ : leftRenalZ;
-    const Point3 hilum(lateral * 64.0, 10.0, renalZ - 5.0);
-    anatomy.tubes.push_back(StraightTube(prefix + "Renal", { Point3(0, 0, renalZ), hilum }, renalRadiusMm));
+    const Point3 hilum = onAxis(renalZ) + Point3(lateral * 64.0, 10.0, -5.0);
+    anatomy.tubes.push_back(StraightTube(prefix + "Renal", { onAxis(renalZ), hilum }, renalRadiusMm));
     if (p.includeKidneys)
     {
-      anatomy.kidneys.push_back({ Point3(lateral * 80.0, 15.0, renalZ - 10.0), Point3(22.0, 18.0, 50.0) });
+      anatomy.kidneys.push_back({ onAxis(renalZ) + Point3(lateral * 80.0, 15.0, -10.0), Point3(22.0, 18.0, 50.0) });
     }
-    truth.landmarks.push_back({ prefix + "RenalOstium", Point3(lateral * rNeck, 0, renalZ) });
+    truth.landmarks.push_back({ prefix + "RenalOstium", onAxis(renalZ) + Point3(lateral * rNeck, 0, 0) });
     truth.landmarks.push_back({ prefix + "IliacBifurcation", iliacEnd[side] });
   }
   anatomy.tubes.push_back(StraightTube("superiorMesenteric",
-                                       { Point3(0, 0, smaZ), Point3(0, -35, smaZ - 5), Point3(0, -45, smaZ - 60) },
+                                       { onAxis(smaZ), onAxis(smaZ) + Point3(0, -35, -5), onAxis(smaZ) + Point3(0, -45, -60) },
                                        visceralRadiusMm));
   anatomy.tubes.push_back(
-    StraightTube("coeliac", { Point3(0, 0, coeliacZ), Point3(0, -30, coeliacZ + 5) }, visceralRadiusMm));
+    StraightTube("coeliac", { onAxis(coeliacZ), onAxis(coeliacZ) + Point3(0, -30, 5) }, visceralRadiusMm));
   if (p.includeBone)
   {
     anatomy.column = true;
@@ -147,9 +155,9 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   }
 
   truth.landmarks.push_back({ "aorticBifurcation", Point3::Zero() });
-  truth.landmarks.push_back({ "proximalImplantationSite", Point3(0, 0, siteZ) });
-  truth.landmarks.push_back({ "superiorMesentericOstium", Point3(0, -rNeck, smaZ) });
-  truth.landmarks.push_back({ "coeliacOstium", Point3(0, -rNeck, coeliacZ) });
+  truth.landmarks.push_back({ "proximalImplantationSite", onAxis(siteZ) });
+  truth.landmarks.push_back({ "superiorMesentericOstium", onAxis(smaZ) + Point3(0, -rNeck, 0) });
+  truth.landmarks.push_back({ "coeliacOstium", onAxis(coeliacZ) + Point3(0, -rNeck, 0) });
   truth.landmarks.push_back({ "maxAneurysmDiameterLevel", Point3(0, 0, zMax) });
   PhantomSizing& sizing = truth.sizing;
   sizing.proximalNeckDiameter = 2 * radiusAtZ(siteZ);
@@ -162,6 +170,7 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   sizing.proximalSiteToBifurcationLength = siteZ;
   sizing.rightIliacLength = commonIliacLengthMm;
   sizing.leftIliacLength = commonIliacLengthMm;
+  sizing.neckAngleBetaDeg = p.neckAngleDeg;
   truth.seedLps = Point3(0, 0, 0.5 * (sacTop + sacBottom));
   return anatomy;
 }
@@ -384,6 +393,7 @@ void ValidatePhantomParams(const PhantomParams& p)
   check("noiseSeed", p.noiseSeed, 0, 2147483647.0, "");
   check("boneGapMm", p.boneGapMm, 0.5, 50, "mm");
   check("kidneyHu", p.kidneyHu, 50, 400, "HU");
+  check("neckAngleDeg", p.neckAngleDeg, 0, 75, "degrees");
 }
 
 AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallback& progress)

@@ -3,7 +3,9 @@
 /// analytic ground truth — the oracle of the project's tests (STYLE.md B6).
 ///
 /// Anatomy, in LPS mm with the aortic bifurcation at the origin and z pointing superior:
-///  - **aorta** along the z axis from z = top down to the bifurcation at z = 0. Radius r(z):
+///  - **aorta** along the z axis from z = top down to the bifurcation at z = 0 — above the sac the
+///    neck leans anteriorly by `neckAngleDeg` (β; the renal, mesenteric and coeliac arteries go
+///    with it; lengths along the aorta are kept). Radius r(z), z the height along the aorta:
 ///    the neck radius above the sac; in the sac (length L, top at `sacTopZ`) a linear blend from
 ///    the neck radius to the distal-neck radius plus a sin² bump that reaches `maxAneurysmDiameterMm`
 ///    at mid-sac; the distal-neck radius from the sac to the bifurcation.
@@ -57,6 +59,7 @@ struct PhantomParams
   double distalNeckDiameterMm = 18.0;
   double rightIliacDiameterMm = 12.0;
   double leftIliacDiameterMm = 12.0;
+  double neckAngleDeg = 0.0; ///< β: the neck leans anteriorly by this from the sac's vertical axis
 
   double lumenHu = 350.0;
   double tissueHu = 40.0;
@@ -109,6 +112,7 @@ struct PhantomSizing
   double proximalSiteToBifurcationLength = 0.0;
   double rightIliacLength = 0.0; ///< aortic bifurcation to the right internal iliac origin
   double leftIliacLength = 0.0;
+  double neckAngleBetaDeg = 0.0;       ///< β, angle between the neck's axis and the sac's
 };
 
 struct PhantomTruth

@@ -22,6 +22,7 @@ TEST(SyntheticAorticPhantomXml, Defaults_EqualPhantomParams)
   EXPECT_EQ(fromXml.directionLps, d.directionLps);
   EXPECT_EQ(neckDiameterMm, d.neckDiameterMm);
   EXPECT_EQ(neckLengthMm, d.neckLengthMm);
+  EXPECT_EQ(neckAngleDeg, d.neckAngleDeg);
   EXPECT_EQ(maxAneurysmDiameterMm, d.maxAneurysmDiameterMm);
   EXPECT_EQ(aneurysmLengthMm, d.aneurysmLengthMm);
   EXPECT_EQ(distalNeckDiameterMm, d.distalNeckDiameterMm);

@@ -68,6 +68,32 @@ TEST(AorticPhantom, SizingTruth_FromTheRadiusProfile)
   EXPECT_NEAR(2 * aorta.radiusMm.maxCoeff(), s.maxAneurysmDiameter, 0.02); // 1 mm samples near the top
 }
 
+TEST(AorticPhantom, NeckAngle_NeckAxisLeansAnteriorlyByBeta)
+{
+  PhantomParams p;
+  p.neckAngleDeg = 40.0;
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  EXPECT_DOUBLE_EQ(phantom.truth.sizing.neckAngleBetaDeg, 40.0);
+  const PhantomVessel& aorta = Vessel(phantom, "aorta");
+  // Above the sac's top (z = 100) the axis runs at 40° from the vertical, toward anterior (−y).
+  const Point3 top = aorta.axis.row(0).transpose(), bend = Point3(0, 0, 100);
+  const Eigen::Vector3d neck = (top - bend).normalized();
+  EXPECT_NEAR(std::acos(neck.z()) * 180.0 / M_PI, 40.0, 1e-9);
+  EXPECT_LT(neck.y(), 0.0);
+  // Lengths along the aorta are kept: the site is 109 mm of axis above the bifurcation.
+  const Point3 site = [&] {
+    for (const auto& l : phantom.truth.landmarks)
+      if (l.name == "proximalImplantationSite")
+        return l.lps;
+    return Point3(Point3::Zero());
+  }();
+  EXPECT_NEAR((site - bend).norm() + 100.0, phantom.truth.sizing.proximalSiteToBifurcationLength, 1e-9);
+  // The labels follow the bent neck: on its axis is lumen, where the straight aorta would be is not.
+  const Point3 onNeck = bend + 40.0 * neck, straight = bend + Point3(0, 0, 40.0);
+  EXPECT_EQ(LabelAt(phantom, onNeck), LumenLabel);
+  EXPECT_EQ(LabelAt(phantom, straight), TissueLabel); // 40·sin 40° = 26 mm from the neck's axis
+}
+
 TEST(AorticPhantom, ObliqueFlippedGrid_RightIliacStaysOnPatientRight)
 {
   PhantomParams p;
@@ -173,6 +199,7 @@ TEST(AorticPhantom, ParameterOutOfRange_InputErrorNamesIt)
     { "noiseSeed is -3.00", [](auto& p) { p.noiseSeed = -3; } },
     { "boneGapMm is 0.00 mm", [](auto& p) { p.boneGapMm = 0; } },
     { "kidneyHu is 500.00 HU", [](auto& p) { p.kidneyHu = 500; } },
+    { "neckAngleDeg is 80.00 degrees", [](auto& p) { p.neckAngleDeg = 80; } },
   };
   for (const auto& [expected, plant] : cases)
   {
