@@ -62,16 +62,17 @@ Points ActiveContourForces(const StentMesh& mesh,
   for (Eigen::Index i = 0; i < V.rows(); ++i)
   {
     const Point3 v = V.row(i).transpose();
-    Eigen::Vector3d gradient;
-    const double phi = EffectiveWallDistance(mesh, wall, i, v, &gradient);
+    const double phi = EffectiveWallDistance(mesh, wall, i, v, nullptr);
     const Eigen::Vector3d out = RadialOffset(mesh, i, v);
     const double r = out.norm();
     if (phi > 0.0 && r > 1e-9)
     {
-      // Along the ring's radial direction only: on the voxel staircase of the wall ∇φ has
-      // tangential parts that would slide vertices into the outward pockets of the staircase.
+      // Back along the ring's radius, with the magnitude of −∇D (1 beyond δ): on the voxel
+      // staircase ∇D has tangential parts that would slide vertices into its outward pockets, and
+      // where the wall does not face the ring's centre (the crotch, a branch ostium) ∇D may even
+      // point along the radius outward. The centerline is inside the lumen, so inward is home.
       const Eigen::Vector3d n = out / r;
-      F.row(i) -= p.wallWeight * std::min(phi / p.wallSofteningMm, 1.0) * gradient.dot(n) * n.transpose();
+      F.row(i) -= p.wallWeight * std::min(phi / p.wallSofteningMm, 1.0) * n.transpose();
       contact[i] = true;
     }
     const double R = p.balloonRadiusMm[mesh.segment[i]];

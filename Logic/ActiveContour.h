@@ -3,19 +3,23 @@
 /// sections 2.1–2.2, in the semi-implicit form of DESIGN.md:
 ///
 ///     (I + τK) V⁺ = V + τ F_ext(V),
-///     F_ext = w_wall · (−∇D·n) n + F_balloon − k_a ((v − c)·a) a,
+///     F_ext = −w_wall · |∇D| n [D > 0] + F_balloon − k_a ((v − c)·a) a,
 ///     F_balloon = p (R − r) n  while r < R, else 0,
 ///
 /// V: #V×3 vertices (LPS mm); K: the stiffness matrix (StiffnessMatrix.h, weights w1…w5); D: the
 /// distance to the lumen outside it, 0 inside (WallDistanceField.h); r: a vertex's distance from
 /// its centerline point within the ring's plane, n the unit vector from that point to the vertex
-/// in that plane (outward, so the balloon never pushes along the vessel; the wall force is taken
-/// along n too, because on the voxel staircase of the wall ∇D has tangential parts that would
-/// slide vertices into its outward pockets and bias every radius outward); R the balloon
+/// in that plane (outward, so the balloon never pushes along the vessel); R the balloon
 /// radius of the vertex's segment (equation 5: the stent and balloon cannot expand further).
 /// I + τK is factored once per run (sparse LDLᵀ, Eigen SimplicialLDLT); each step is one solve
 /// with three right-hand sides. The run stops when no vertex moves more than `toleranceMm` in a
 /// step (converged) or after `maxIterations` steps, and says which.
+///
+/// The wall force acts back along −n with the magnitude of ∇D (1 outside the lumen): taken along
+/// ∇D itself, its tangential parts on the voxel staircase of the wall slide vertices into the
+/// staircase's outward pockets (+0.16 mm on every radius), and where the wall does not face the
+/// ring's centre (under the crotch, at a branch ostium) ∇D·n can even be negative and push the
+/// vertex further out. The centerline lies inside the lumen, so back along the radius is back in.
 ///
 /// The wall force is applied explicitly, so its jump from 0 inside to w_wall outside would make
 /// vertices chatter across the wall by τ·w_wall. It therefore ramps up linearly over the first
@@ -48,9 +52,10 @@
 /// is wider.
 ///
 /// Energy: E = ½ Σ_c V_cᵀ K V_c + w_wall Σ_v D_δ(v) + Σ_v (p_v/2)(R − r)²₊ + Σ_v (k_a/2)((v − c)·a)²
-/// (p_v the vertex's pressure), recorded before the first and after every step. Its negative gradient is −KV + F_ext
-/// up to the tangential part of the wall force left out above, so E need not fall when vertices
-/// press on the wall; where they do not (R inside the lumen), each step lowers it.
+/// (p_v the vertex's pressure), recorded before the first and after every step. Its negative
+/// gradient is −KV + F_ext except that the wall force acts along −n rather than −∇D (above), so E
+/// is only guaranteed to fall where the wall faces the ring's centre or is not touched; the tests
+/// check that it never rises on a Y of tubes in both modes.
 /// Errors: InputError for parameters out of range. (I + τK is symmetric positive definite for
 /// valid parameters, so its factorization cannot fail.)
 /// Complexity: one sparse factorization (near-linear for these banded meshes) plus O(#V) a step.

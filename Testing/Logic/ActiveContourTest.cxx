@@ -117,9 +117,14 @@ TEST_F(YPhantomFit, MeasureMode_EnergyNeverIncreases)
   EXPECT_LT(measure->energy.back(), 0.2 * measure->energy.front());
 }
 
-TEST(ActiveContour, AneurysmPhantom_SurfaceFollowsTheSacToItsWidest)
+class AneurysmNeckAngle : public ::testing::TestWithParam<double>
 {
-  PhantomParams pp; // 0.8 × 0.8 × 1.0 mm, noise 20 HU
+};
+
+TEST_P(AneurysmNeckAngle, SurfaceFollowsTheSacToItsWidest)
+{
+  PhantomParams pp;             // 0.8 × 0.8 × 1.0 mm, noise 20 HU
+  pp.neckAngleDeg = GetParam(); // 40°: the trunk bends through the neck–sac junction
   const AorticPhantom phantom = GenerateAorticPhantom(pp);
   const LabelImage::Pointer lumen = GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, RegionGrowingParams{}).mask;
   const CenterlineTree tree = testing::CenterlinesFromMask(*lumen);
@@ -140,6 +145,8 @@ TEST(ActiveContour, AneurysmPhantom_SurfaceFollowsTheSacToItsWidest)
   EXPECT_NEAR(widest, phantom.truth.sizing.maxAneurysmDiameter, 1.0);
   EXPECT_TRUE(r.converged);
 }
+
+INSTANTIATE_TEST_SUITE_P(ActiveContour, AneurysmNeckAngle, ::testing::Values(0.0, 40.0));
 
 TEST(ActiveContour, ParameterOutOfRange_InputError)
 {
