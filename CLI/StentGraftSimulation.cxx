@@ -95,10 +95,13 @@ int main(int argc, char* argv[])
       progress.Begin("FitStent", "Fitting the bifurcated stent surface (active contour)");
       mesh = BuildStentMesh(centerlines, meshParams);
       const WallDistanceField wall = WallDistanceField::FromLumen(*lumen.mask);
-      initialRadius = Eigen::VectorXd::Constant(mesh.V.rows(), meshParams.startRadiusMm);
-      initialWallDistance.resize(mesh.V.rows());
-      for (Eigen::Index i = 0; i < mesh.V.rows(); ++i)
-        initialWallDistance[i] = wall.Sample(mesh.V.row(i).transpose());
+      if (!outputInitialStentModel.empty()) // only that output needs the initial surface's values
+      {
+        initialRadius = Eigen::VectorXd::Constant(mesh.V.rows(), meshParams.startRadiusMm);
+        initialWallDistance.resize(mesh.V.rows());
+        for (Eigen::Index i = 0; i < mesh.V.rows(); ++i)
+          initialWallDistance[i] = wall.Sample(mesh.V.row(i).transpose());
+      }
       fit = FitActiveContour(mesh, wall, acmParams, progress.Callback());
       acmIterations = fit.iterations;
       acmConverged = fit.converged;

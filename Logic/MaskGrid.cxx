@@ -163,31 +163,6 @@ MaskGrid ConnectedComponent(const MaskGrid& mask, long seedFlat)
   return out;
 }
 
-ComponentSizes MeasureComponents(const MaskGrid& mask)
-{
-  ComponentSizes result;
-  std::vector<std::uint8_t> visited(mask.voxels.size(), 0);
-  std::vector<long> queue;
-  for (long flat = 0; flat < mask.Count(); ++flat)
-  {
-    if (!mask.voxels[flat] || visited[flat])
-    {
-      continue;
-    }
-    queue.assign(1, flat);
-    visited[flat] = 1;
-    Flood(mask, 1, queue, visited);
-    const long size = static_cast<long>(queue.size());
-    result.sizes.push_back(size);
-    if (size > result.largestSize)
-    {
-      result.largestSize = size;
-      result.largestVoxel = flat;
-    }
-  }
-  return result;
-}
-
 std::vector<int> LabelComponents(const MaskGrid& mask, std::vector<long>& sizes)
 {
   std::vector<int> labels(mask.voxels.size(), 0);

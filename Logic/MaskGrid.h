@@ -48,16 +48,6 @@ MaskGrid Dilate(const MaskGrid& mask, const std::vector<std::array<int, 3>>& bal
 /// voxel is background.
 MaskGrid ConnectedComponent(const MaskGrid& mask, long seedFlat);
 
-/// Sizes (voxel counts) of all 6-connected foreground components, and the flat index of one
-/// voxel of the largest (-1 when there is no foreground).
-struct ComponentSizes
-{
-  std::vector<long> sizes;
-  long largestSize = 0;
-  long largestVoxel = -1;
-};
-ComponentSizes MeasureComponents(const MaskGrid& mask);
-
 /// Labels the 6-connected foreground components 1, 2, … (0 = background); `sizes[label − 1]` is
 /// each component's voxel count.
 std::vector<int> LabelComponents(const MaskGrid& mask, std::vector<long>& sizes);

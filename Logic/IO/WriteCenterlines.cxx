@@ -1,7 +1,6 @@
 #include "WriteCenterlines.h"
 
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 #include <vtkCellArray.h>
@@ -13,8 +12,8 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
-#include "../Errors.h"
 #include "WriteModel.h"
+#include "WriteTextFile.h"
 
 namespace sgp
 {
@@ -72,11 +71,7 @@ void WriteLandmarks(const CenterlineTree& tree, const std::string& path)
          << (i + 1 < tree.landmarks.size() ? "," : "") << "\n";
   }
   json << "      ]\n    }\n  ]\n}\n";
-  std::ofstream out(path);
-  out << json.str();
-  out.close();
-  if (!out)
-    throw InputError("Cannot write the landmarks '" + path + "'; give a writable path ending in .mrk.json.");
+  WriteTextFile(json.str(), path, "the landmarks", "give a writable path ending in .mrk.json.");
 }
 
 } // namespace sgp

@@ -1,10 +1,9 @@
 #include "WritePhantomTruth.h"
 
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
-#include "../Errors.h"
+#include "WriteTextFile.h"
 
 namespace sgp
 {
@@ -82,13 +81,7 @@ void WritePhantomTruth(const AorticPhantom& phantom, const std::string& path)
     json << "]}" << (v + 1 < truth.vessels.size() ? "," : "") << "\n";
   }
   json << "  ],\n  \"labels\": {\"0\": \"tissue\", \"1\": \"lumen\", \"2\": \"bone\", \"3\": \"kidney\"}\n}\n";
-  std::ofstream out(path);
-  out << json.str();
-  out.close();
-  if (!out)
-  {
-    throw InputError("Cannot write the ground truth '" + path + "'; give a writable path.");
-  }
+  WriteTextFile(json.str(), path, "the ground truth");
 }
 
 } // namespace sgp

@@ -1,9 +1,8 @@
 #include "WriteReturnParameters.h"
 
 #include <cstdio>
-#include <fstream>
 
-#include "../Errors.h"
+#include "WriteTextFile.h"
 
 namespace sgp
 {
@@ -18,16 +17,10 @@ std::string FormatReturnValue(double value)
 
 void WriteReturnParameters(const ReturnValues& values, const std::string& path)
 {
-  std::ofstream out(path);
+  std::string text;
   for (const auto& [name, value] : values)
-  {
-    out << name << " = " << value << "\n";
-  }
-  out.close();
-  if (!out)
-  {
-    throw InputError("Cannot write the return-parameter file '" + path + "'; give a writable path.");
-  }
+    text += name + " = " + value + "\n";
+  WriteTextFile(text, path, "the return-parameter file");
 }
 
 } // namespace sgp
