@@ -4,9 +4,9 @@
 Usage: run_benchmarks.py BUILD_DIR [--workdir DIR]
 
 1. The Google Benchmark program (segmentation of a 512 x 512 x 400 phantom in memory).
-2. The whole CLI run as Slicer would start it, on the same phantom written as a gzip NRRD:
-   wall time, peak resident memory of the process (getrusage of the child), and the per-stage
-   times from its <filter-time> tags.
+2. Thinning against scikit-image's skeletonize_3d (Testing/compare_skeletons.py --benchmark).
+3. The whole planning job against the floor of reading its input (benchmark_whole_job.py):
+   wall times, ratio, peak resident memory, per-stage times from the <filter-time> tags.
 Targets come from the issues; the table says for each whether it was met. Timings are not
 asserted anywhere else: tests check correctness, this script measures speed.
 """
@@ -90,26 +90,10 @@ def main():
                  "%.2f s vs %.2f s" % (ours, theirs), "faster than the peer", ours < theirs,
                  "agreement %s voxels (symmetric mean distance)" % row[5].strip()))
 
-    phantom = os.path.join(build, "CLI", "SyntheticAorticPhantom")
-    cli = os.path.join(build, "CLI", "StentGraftSimulation")
-    volume = os.path.join(work, "phantom-512.nrrd")
-    ret = os.path.join(work, "phantom.params")
-    subprocess.run([phantom, "--returnparameterfile", ret, "--spacingMm", "0.7,0.7,1.0", "--sizeVoxels",
-                    "512,512,400", "--includeBone", "--includeKidneys", volume], check=True, capture_output=True)
-    seed = dict(l.split(" = ", 1) for l in open(ret).read().splitlines())["seedRas"]
-    seconds, rss, out, err, code = run_measured(
-        [cli, "--returnparameterfile", os.path.join(work, "run.params"), "--seed", seed, "--outputLabelMap",
-         os.path.join(work, "lumen.nrrd"), "--outputCenterlines", os.path.join(work, "centerlines.vtp"),
-         "--outputLandmarks", os.path.join(work, "landmarks.mrk.json"),
-         "--outputStentModel", os.path.join(work, "stent.vtp"), volume])
-    if code != 0:
-        sys.exit("StentGraftSimulation failed: " + err)
-    rows.append(("Whole CLI run (read gzip NRRD, segment, centerlines, stent fit, write)", "%.2f s" % seconds, "",
-                 None, ""))
-    rows.append(("Peak memory of the whole CLI run", "%.0f MiB" % rss, "< 2048 MiB", rss < 2048, ""))
-    stages = re.findall(r"<filter-end>\s*<filter-name>([^<]*)</filter-name>\s*<filter-time>([^<]*)</filter-time>", out)
-    for name, t in stages:
-        rows.append(("  stage %s" % name, "%.2f s" % float(t), "", None, ""))
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    from benchmark_whole_job import whole_job_rows  # the whole job against its reading floor
+    for what, value, target, met in whole_job_rows(build, os.path.join(work, "whole-job")):
+        rows.append((what, value, target, met, ""))
 
     print("Machine: %s, %d cores, %s" % (cpu_name(), os.cpu_count(), platform.platform()))
     print()

@@ -1,8 +1,12 @@
 // StentGraftSimulation: the SEM command-line module of StentGraftPlanner.
 // Sequence (STYLE.md B7): PARSE_ARGS, ValidateParameters, read, convert the seed once, run the
 // stages in DESIGN.md's order with progress, write every output at once, return.
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <optional>
+
+#include <nlohmann/json.hpp>
 
 #include <itkObject.h>
 #include <vtkObject.h>
@@ -14,8 +18,11 @@
 #include "IO/OutputTransaction.h"
 #include "IO/ReadCtImage.h"
 #include "IO/WriteImage.h"
+#include "IO/WriteMeasurements.h"
 #include "IO/WriteReturnParameters.h"
 #include "IO/WriteStentModel.h"
+#include "IO/WriteTextFile.h"
+#include "MeasureAnatomy.h"
 #include "SlicerProgress.h"
 #include "StentGraftSimulationCLP.h"
 #include "StentGraftSimulationParameters.h"
@@ -29,6 +36,14 @@ void PrintWarnings(const std::vector<std::string>& warnings)
   {
     std::cerr << "WARNING: " << warning << std::endl;
   }
+}
+
+/// A measurement as a return value: −1 when it could not be measured (every such value is
+/// positive when measured; the XML says so).
+std::string ReturnMeasurement(const sgp::Measurements& m, const std::string& name)
+{
+  const double value = m.Value(name);
+  return sgp::FormatReturnValue(std::isfinite(value) ? value : -1.0);
 }
 
 } // namespace
@@ -47,20 +62,30 @@ int main(int argc, char* argv[])
       thresholdMode, lowerHu, upperHu, windowSigmas, seedMinimumHu, leakOpeningRadiusMm, maximumLumenVolumeMl);
     const SkeletonGraphParams graphParams = MakeSkeletonGraphParams(spurLengthRatio);
     const CenterlineParams centerlineParams = MakeCenterlineParams(centerlineStepMm, centerlineSmoothingMm);
-    const StentMeshParams meshParams =
-      MakeStentMeshParams(verticesPerRing, ringSpacingMm, startRadiusMm, proximalStartMm);
+    StentMeshParams meshParams = MakeStentMeshParams(verticesPerRing, ringSpacingMm, startRadiusMm, proximalStartMm);
     const ActiveContourParams acmParams =
       MakeActiveContourParams(acmMode, measureStiffnessWeights, measureBalloonRadiusMm, measureBalloonPressure,
                               stentDiametersMm, stentStiffnessWeights, stentBalloonPressure, acmTau, wallWeight,
                               wallSofteningMm, acmMaxIterations, acmToleranceMm);
+    // Measurements are always read off a measure-mode fit (paper, section 2.2).
+    const ActiveContourParams measureParams =
+      MakeActiveContourParams("measure", measureStiffnessWeights, measureBalloonRadiusMm, measureBalloonPressure,
+                              stentDiametersMm, stentStiffnessWeights, stentBalloonPressure, acmTau, wallWeight,
+                              wallSofteningMm, acmMaxIterations, acmToleranceMm);
     ValidateParameters(inputVolume, seed, growParams, graphParams, centerlineParams, meshParams, acmParams);
-    const bool wantStent = !outputStentModel.empty() || !outputInitialStentModel.empty();
+    std::optional<Point3> lowestRenalOstiumLps;
+    if (!lowestRenalOstium.empty())
+      lowestRenalOstiumLps = RasToLps(lowestRenalOstium);
+    const bool wantMeasurements =
+      !outputMeasurements.empty() || !outputDiameterProfile.empty() || !outputReport.empty();
+    const bool wantStent = wantMeasurements || !outputStentModel.empty() || !outputInitialStentModel.empty();
     const bool wantCenterlines = wantStent || !outputCenterlines.empty() || !outputLandmarks.empty();
     SlicerProgress progress(std::cout, { { "ReadVolume", 2.0 },
                                          { "SegmentLumen", 4.0 },
                                          { "ThinLumen", 2.0 },
                                          { "ExtractCenterlines", 1.0 },
                                          { "FitStent", 2.0 },
+                                         { "MeasureAnatomy", 0.2 },
                                          { "WriteOutputs", 1.0 } });
 
     progress.Begin("ReadVolume", "Reading the CT volume");
@@ -89,12 +114,18 @@ int main(int argc, char* argv[])
     }
     StentMesh mesh;
     ActiveContourResult fit;
+    Measurements measurements;
     Eigen::VectorXd initialRadius, initialWallDistance;
     if (wantStent)
     {
       progress.Begin("FitStent", "Fitting the bifurcated stent surface (active contour)");
+      const ProximalSite site = FindProximalSite(centerlines, lowestRenalOstiumLps);
+      if (!site.warning.empty())
+        std::cerr << "WARNING: " << site.warning << std::endl;
+      if (meshParams.proximalAbscissaMm < 0.0)
+        meshParams.proximalAbscissaMm = site.abscissaMm;
       mesh = BuildStentMesh(centerlines, meshParams);
-      const WallDistanceField wall = WallDistanceField::FromLumen(*lumen.mask);
+      const WallDistanceField wall = WallDistanceField::FromLumen(*lumen.mask, 5.0, StentReach(mesh, centerlines));
       if (!outputInitialStentModel.empty()) // only that output needs the initial surface's values
       {
         initialRadius = Eigen::VectorXd::Constant(mesh.V.rows(), meshParams.startRadiusMm);
@@ -108,6 +139,16 @@ int main(int argc, char* argv[])
       if (!fit.converged)
         std::cerr << "WARNING: The active contour did not converge within " << fit.iterations
                   << " iterations (acmMaxIterations); the surface written is the last one." << std::endl;
+      if (wantMeasurements)
+      {
+        progress.Begin("MeasureAnatomy", "Measuring diameters, lengths and angles");
+        ActiveContourResult measureFit;
+        if (acmMode != "measure")
+          measureFit = FitActiveContour(mesh, wall, measureParams);
+        measurements = MeasureAnatomy(centerlines, mesh, acmMode == "measure" ? fit.V : measureFit.V, site);
+        for (std::size_t i = site.warning.empty() ? 0 : 1; i < measurements.warnings.size(); ++i)
+          std::cerr << "WARNING: " << measurements.warnings[i] << std::endl;
+      }
     }
 
     progress.Begin("WriteOutputs", "Writing the outputs");
@@ -132,15 +173,38 @@ int main(int argc, char* argv[])
     {
       WriteStentModel(mesh, fit.V, fit.radiusMm, fit.wallDistanceMm, outputs.Stage(outputStentModel));
     }
+    if (!outputMeasurements.empty())
+    {
+      WriteMeasurementsTable(measurements, outputs.Stage(outputMeasurements));
+    }
+    if (!outputDiameterProfile.empty())
+    {
+      WriteDiameterProfiles(measurements, outputs.Stage(outputDiameterProfile));
+    }
+    if (!outputReport.empty())
+    {
+      nlohmann::json report = MeasurementsToJson(measurements);
+      report["format"] = "StentGraftPlanner.report/1";
+      report["run"] = { { "inputVolume", inputVolume },
+                        { "lumenVolumeMl", lumenVolumeMl },
+                        { "acmIterations", acmIterations },
+                        { "acmConverged", static_cast<bool>(acmConverged) } };
+      WriteTextFile(report.dump(2) + "\n", outputs.Stage(outputReport), "planning report");
+    }
     if (!returnParameterFile.empty())
     {
-      WriteReturnParameters({ { "lumenVolumeMl", FormatReturnValue(lumenVolumeMl) },
-                              { "lowerHuUsed", FormatReturnValue(lowerHuUsed) },
-                              { "upperHuUsed", FormatReturnValue(upperHuUsed) },
-                              { "edgeHuUsed", FormatReturnValue(edgeHuUsed) },
-                              { "acmIterations", std::to_string(acmIterations) },
-                              { "acmConverged", acmConverged ? "true" : "false" } },
-                            outputs.Stage(returnParameterFile));
+      ReturnValues values = {
+        { "lumenVolumeMl", FormatReturnValue(lumenVolumeMl) }, { "lowerHuUsed", FormatReturnValue(lowerHuUsed) },
+        { "upperHuUsed", FormatReturnValue(upperHuUsed) },     { "edgeHuUsed", FormatReturnValue(edgeHuUsed) },
+        { "acmIterations", std::to_string(acmIterations) },    { "acmConverged", acmConverged ? "true" : "false" }
+      };
+      if (wantMeasurements)
+      {
+        for (const Measurement& m : measurements.values)
+          values.emplace_back(m.name, ReturnMeasurement(measurements, m.name));
+        values.emplace_back("proximalSiteSource", ToString(measurements.site.source));
+      }
+      WriteReturnParameters(values, outputs.Stage(returnParameterFile));
     }
     outputs.Commit();
     progress.End();
@@ -162,6 +226,15 @@ int main(int argc, char* argv[])
       std::cout << "Stent surface: " << mesh.V.rows() << " vertices, " << acmMode << " mode, "
                 << (fit.converged ? "converged" : "not converged") << " after " << fit.iterations << " iterations"
                 << std::endl;
+    }
+    if (wantMeasurements)
+    {
+      std::cout << "Proximal site (" << ToString(measurements.site.source) << ") at "
+                << FormatReturnValue(measurements.site.abscissaMm) << " mm along the aorta" << std::endl;
+      for (const Measurement& m : measurements.values)
+        std::cout << "  " << m.name << " = "
+                  << (std::isfinite(m.value) ? FormatReturnValue(m.value) + " " + m.unit : std::string("not measured"))
+                  << std::endl;
     }
     return EXIT_SUCCESS;
   }

@@ -58,6 +58,16 @@ struct CenterlineTree
 /// ends). Needs at least two points.
 Point3 PositionAt(const Centerline& c, double s);
 
+/// Arc length of the point of `c` nearest to `p` (projected onto the nearest segment), mm; and
+/// the distance from `p` to it through `distanceMm` when given. Needs at least two points.
+double ProjectOntoCenterline(const Centerline& c, const Point3& p, double* distanceMm = nullptr);
+
+/// The unit tangent of `c` at arc length `s` (downstream; the segment containing s).
+Eigen::Vector3d TangentAt(const Centerline& c, double s);
+
+/// The centerline's inscribed radius at arc length `s` (linear between points; clamped), mm.
+double RadiusAt(const Centerline& c, double s);
+
 /// Builds a Centerline from points (n×3) and radii, computing the abscissa.
 Centerline MakeCenterline(const std::string& name, const std::vector<Point3>& points, const std::vector<double>& radii);
 

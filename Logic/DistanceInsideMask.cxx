@@ -60,37 +60,47 @@ DistanceField DistanceInsideMask(const MaskGrid& mask,
       ++foreground;
     }
   const bool fromBackground = mask.Count() - foreground < foreground;
-  for (long flat = 0; flat < mask.Count(); ++flat)
-  {
-    const bool fg = mask.voxels[flat] != 0;
-    const auto p = mask.Ijk(flat);
-    const bool border = p[0] == 0 || p[1] == 0 || p[2] == 0 || p[0] == mask.size[0] - 1 ||
-                        p[1] == mask.size[1] - 1 || p[2] == mask.size[2] - 1;
-    // From the background side, a foreground voxel still has to look outside the box itself.
-    if (fg && (fromBackground ? !(border && outsideIsBackground) : false))
-      continue;
-    if (!fg && !fromBackground)
-      continue;
-    for (int dk = -1; dk <= 1; ++dk)
-      for (int dj = -1; dj <= 1; ++dj)
-        for (int di = -1; di <= 1; ++di)
-        {
-          const std::array<long, 3> q{ p[0] + di, p[1] + dj, p[2] + dk };
-          if (fg)
-          {
-            if ((fromBackground ? outside(q[0], q[1], q[2]) && outsideIsBackground : isBackground(q[0], q[1], q[2])))
-              offer(flat, p, q);
-          }
-          else if (!outside(q[0], q[1], q[2]) && mask.voxels[mask.Flat(q[0], q[1], q[2])])
-          {
-            offer(mask.Flat(q[0], q[1], q[2]), q, p);
-          }
-        }
-  }
+  for (long flat = 0, k = 0; k < mask.size[2]; ++k)
+    for (long j = 0; j < mask.size[1]; ++j)
+      for (long i = 0; i < mask.size[0]; ++i, ++flat)
+      {
+        const bool fg = mask.voxels[flat] != 0;
+        const std::array<long, 3> p{ i, j, k };
+        const bool border = p[0] == 0 || p[1] == 0 || p[2] == 0 || p[0] == mask.size[0] - 1 ||
+                            p[1] == mask.size[1] - 1 || p[2] == mask.size[2] - 1;
+        // From the background side, a foreground voxel still has to look outside the box itself.
+        if (fg && (fromBackground ? !(border && outsideIsBackground) : false))
+          continue;
+        if (!fg && !fromBackground)
+          continue;
+        for (int dk = -1; dk <= 1; ++dk)
+          for (int dj = -1; dj <= 1; ++dj)
+            for (int di = -1; di <= 1; ++di)
+            {
+              const std::array<long, 3> q{ p[0] + di, p[1] + dj, p[2] + dk };
+              if (fg)
+              {
+                if ((fromBackground ? outside(q[0], q[1], q[2]) && outsideIsBackground
+                                    : isBackground(q[0], q[1], q[2])))
+                  offer(flat, p, q);
+              }
+              else if (!outside(q[0], q[1], q[2]) && mask.voxels[mask.Flat(q[0], q[1], q[2])])
+              {
+                offer(mask.Flat(q[0], q[1], q[2]), q, p);
+              }
+            }
+      }
   for (long flat = 0; flat < mask.Count(); ++flat)
     if (mask.voxels[flat] && distance[flat] < infinity)
       queue.push({ distance[flat], flat });
 
+  std::array<std::array<int, 3>, 27> neighbour{};
+  std::array<long, 27> offset{};
+  for (int m = 0; m < 27; ++m)
+  {
+    neighbour[m] = { m % 3 - 1, (m / 3) % 3 - 1, m / 9 - 1 };
+    offset[m] = neighbour[m][0] + mask.size[0] * (neighbour[m][1] + mask.size[1] * neighbour[m][2]);
+  }
   while (!queue.empty())
   {
     const Candidate c = queue.top();
@@ -98,22 +108,36 @@ DistanceField DistanceInsideMask(const MaskGrid& mask,
     if (c.distance > distance[c.voxel])
       continue;
     const auto p = mask.Ijk(c.voxel);
-    for (int dk = -1; dk <= 1; ++dk)
-      for (int dj = -1; dj <= 1; ++dj)
-        for (int di = -1; di <= 1; ++di)
-        {
-          const std::array<long, 3> q{ p[0] + di, p[1] + dj, p[2] + dk };
-          if (outside(q[0], q[1], q[2]) || isBackground(q[0], q[1], q[2]))
-            continue;
-          const long n = mask.Flat(q[0], q[1], q[2]);
-          const float d = length(q, site[c.voxel]);
-          if (d < distance[n] && d <= maximumDistanceMm)
-          {
-            distance[n] = d;
-            site[n] = site[c.voxel];
-            queue.push({ d, n });
-          }
-        }
+    const std::array<int, 3> from = site[c.voxel];
+    // Away from the box's faces every neighbour is in the box: flat offsets, no bounds checks.
+    const bool interior =
+      p[0] > 0 && p[1] > 0 && p[2] > 0 && p[0] < mask.size[0] - 1 && p[1] < mask.size[1] - 1 && p[2] < mask.size[2] - 1;
+    for (int m = 0; m < 27; ++m)
+    {
+      if (m == 13)
+        continue; // the voxel itself
+      const std::array<long, 3> q{ p[0] + neighbour[m][0], p[1] + neighbour[m][1], p[2] + neighbour[m][2] };
+      long n = 0;
+      if (interior)
+      {
+        n = c.voxel + offset[m];
+        if (!mask.voxels[n])
+          continue;
+      }
+      else
+      {
+        if (outside(q[0], q[1], q[2]) || isBackground(q[0], q[1], q[2]))
+          continue;
+        n = mask.Flat(q[0], q[1], q[2]);
+      }
+      const float d = length(q, from);
+      if (d < distance[n] && d <= maximumDistanceMm)
+      {
+        distance[n] = d;
+        site[n] = from;
+        queue.push({ d, n });
+      }
+    }
   }
   for (float& d : distance)
     if (d == infinity)

@@ -8,6 +8,7 @@
 #include "CheckRange.h"
 #include "Errors.h"
 #include "Format.h"
+#include "ProximalSite.h"
 
 namespace sgp
 {
@@ -113,16 +114,14 @@ StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& p)
   // Ring positions: the trunk measured up from its junction end, the legs down from theirs.
   std::vector<double> trunk;
   const double trunkEnd = tree.aorta.LengthMm() - gap;
-  double proximal = p.proximalAbscissaMm;
-  if (proximal < 0.0)
+  const double proximal = p.proximalAbscissaMm >= 0.0 ? p.proximalAbscissaMm : FindProximalSite(tree).abscissaMm;
+  if (trunkEnd > proximal)
   {
-    proximal = 0.0;
-    for (const char* renal : { "rightRenalOstium", "leftRenalOstium" })
-      if (const Landmark* ostium = tree.FindLandmark(renal))
-        proximal = std::max(proximal, AbscissaNearest(tree.aorta, ostium->lps) + 5.0);
+    // Evenly spaced, at most ringSpacingMm apart, the first ring at the proximal site.
+    const int intervals = static_cast<int>(std::ceil((trunkEnd - proximal) / p.ringSpacingMm - 1e-9));
+    for (int k = 0; k <= intervals; ++k)
+      trunk.push_back(proximal + (trunkEnd - proximal) * k / intervals);
   }
-  for (double s = trunkEnd; s >= proximal - 1e-9; s -= p.ringSpacingMm)
-    trunk.insert(trunk.begin(), s);
   std::array<std::vector<double>, 2> legs;
   const Centerline* iliac[2] = { &tree.rightIliac, &tree.leftIliac };
   const char* bifurcation[2] = { "rightIliacBifurcation", "leftIliacBifurcation" };
@@ -172,6 +171,7 @@ StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& p)
   {
     mesh.firstVertex[seg] = total;
     mesh.ringCount[seg] = static_cast<int>(frames[seg].centre.size());
+    mesh.ringAbscissaMm[seg] = seg == TrunkSegment ? trunk : legs[seg - 1];
     total += mesh.ringCount[seg] * n;
   }
   mesh.V.resize(total, 3);
@@ -250,6 +250,19 @@ StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& p)
   for (std::size_t i = 0; i < triangles.size(); ++i)
     mesh.F.row(static_cast<Eigen::Index>(i)) = triangles[i].transpose();
   return mesh;
+}
+
+std::vector<Ball> StentReach(const StentMesh& mesh, const CenterlineTree& tree)
+{
+  const Centerline* vessel[3] = { &tree.aorta, &tree.rightIliac, &tree.leftIliac };
+  std::vector<Ball> balls;
+  for (int seg = 0; seg < 3; ++seg)
+    for (int k = 0; k < mesh.RingsIn(seg); ++k)
+    {
+      const double radius = RadiusAt(*vessel[seg], mesh.ringAbscissaMm[seg][k]);
+      balls.push_back({ mesh.centre.row(mesh.Id(seg, k, 0)).transpose(), 1.5 * radius + 10.0 });
+    }
+  return balls;
 }
 
 } // namespace sgp

@@ -11,10 +11,11 @@
 /// j = n/4 is anterior, j = 3n/4 posterior, j = n/2 the right side of the trunk and the lateral
 /// side of each leg.
 ///
-/// The trunk runs from `proximalAbscissaMm` along the aorta (by default just below the lowest
-/// renal artery, so that it does not open into the renal ostia; the measurements stage refines
-/// this proximal implantation site) down to 3 × startRadiusMm above the bifurcation; each leg
-/// starts 3 × startRadiusMm down its iliac (so the two first leg rings do not touch) and runs
+/// The trunk runs from `proximalAbscissaMm` along the aorta (by default the proximal implantation
+/// site, the lower edge of the lowest renal ostium: FindProximalSite) down to 3 × startRadiusMm
+/// above the bifurcation, its rings evenly spaced at most `ringSpacingMm` apart so that the first
+/// lies exactly at the site (measurement (a) is read there); each leg starts 3 × startRadiusMm
+/// down its iliac (so the two first leg rings do not touch) and runs
 /// `legLengthMm` (0: to 5 mm above the internal iliac origin, or 60 mm without one).
 ///
 /// **Connection element.** Stiffness acts along *s-chains* (vertex sequences along the vessel)
@@ -32,6 +33,7 @@
 /// Errors: InputError for parameters out of range or vessels too short for one ring.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "Centerlines.h"
@@ -52,8 +54,8 @@ struct StentMeshParams
   int verticesPerRing = 16;   ///< n, a multiple of 4 in [8, 256]
   double ringSpacingMm = 4.0; ///< in [0.5, 20]
   double startRadiusMm = 3.0; ///< in [0.5, 30]
-  /// Where the trunk starts, as arc length along the aorta from its top, mm (≥ 0); negative: 5 mm
-  /// below the lowest renal ostium landmark, or the top without one.
+  /// Where the trunk starts, as arc length along the aorta from its top, mm (≥ 0); negative: the
+  /// proximal implantation site detected from the renal branches (FindProximalSite), or the top.
   double proximalAbscissaMm = -1.0;
   double legLengthMm = 0.0; ///< 0 = to the internal iliac origin (60 mm without one)
 };
@@ -78,11 +80,19 @@ struct StentMesh
   Point3 crotchPoint = Point3::Zero();
   Eigen::Vector3d crotchNormal = Eigen::Vector3d::UnitX();
   std::array<int, 3> ringCount{ 0, 0, 0 };
+  /// Per segment, each ring's arc length along its centerline (the aorta from its top for the
+  /// trunk, the iliac from the bifurcation for a leg), mm, in ring order.
+  std::array<std::vector<double>, 3> ringAbscissaMm;
   std::array<int, 3> firstVertex{ 0, 0, 0 };
 };
 
 void ValidateStentMeshParams(const StentMeshParams& params);
 
 StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& params = {});
+
+/// Where the stent's surface can go while it is fitted: a ball around each ring's centre of
+/// radius 1.5 × the vessel's inscribed radius there (a cross-section may be elliptical) + 10 mm
+/// (the wall field's 5 mm band, two voxels, margin) — the region for WallDistanceField (LPS mm).
+std::vector<Ball> StentReach(const StentMesh& mesh, const CenterlineTree& tree);
 
 } // namespace sgp

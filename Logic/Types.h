@@ -28,6 +28,13 @@ using Points = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 /// n×3 vertex indices of triangles, one per row.
 using Triangles = Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
+/// A ball: centre in LPS mm, radius in mm.
+struct Ball
+{
+  Point3 centre;
+  double radiusMm = 0.0;
+};
+
 /// Progress of a stage: `fraction` in [0, 1] of that stage, `stage` a short description of the
 /// current step. Optional everywhere: an empty function is never called.
 using ProgressCallback = std::function<void(double fraction, std::string_view stage)>;

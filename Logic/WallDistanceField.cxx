@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
+#include <limits>
 
 #include <Eigen/Dense>
 
@@ -15,16 +17,76 @@
 namespace sgp
 {
 
+namespace
+{
+
+/// The index box of the lumen voxels that lie inside any of the balls: one pass over the lumen
+/// voxels (inside the balls' common bounding box), each tested against the balls until one holds it.
+IndexBox ForegroundBoxWithin(const LabelImage& lumen, const std::vector<Ball>& region)
+{
+  const auto size = lumen.GetLargestPossibleRegion().GetSize();
+  const IndexBox all = ForegroundBox(lumen);
+  Point3 lower = Point3::Constant(std::numeric_limits<double>::infinity()), upper = -lower;
+  for (const Ball& ball : region)
+  {
+    lower = lower.cwiseMin(ball.centre - Point3::Constant(ball.radiusMm));
+    upper = upper.cwiseMax(ball.centre + Point3::Constant(ball.radiusMm));
+  }
+  itk::Point<double, 3> origin;
+  lumen.TransformIndexToPhysicalPoint(itk::Index<3>{ { 0, 0, 0 } }, origin);
+  Eigen::Matrix3d indexToLps;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c)
+      indexToLps(r, c) = lumen.GetDirection()(r, c) * lumen.GetSpacing()[c];
+  const Point3 o(origin[0], origin[1], origin[2]);
+  std::array<long, 3> lo{ long(size[0]), long(size[1]), long(size[2]) }, hi{ -1, -1, -1 };
+  const unsigned char* buffer = lumen.GetBufferPointer();
+  for (long k = all.first[2]; k < all.first[2] + all.size[2]; ++k)
+    for (long j = all.first[1]; j < all.first[1] + all.size[1]; ++j)
+      for (long i = all.first[0]; i < all.first[0] + all.size[0]; ++i)
+      {
+        if (!buffer[i + long(size[0]) * (j + long(size[1]) * k)])
+          continue;
+        if (i >= lo[0] && i <= hi[0] && j >= lo[1] && j <= hi[1] && k >= lo[2] && k <= hi[2])
+          continue; // already inside the box: cannot grow it
+        const Point3 p = o + indexToLps * Eigen::Vector3d(double(i), double(j), double(k));
+        if ((p.array() < lower.array()).any() || (p.array() > upper.array()).any())
+          continue;
+        for (const Ball& ball : region)
+          if ((p - ball.centre).squaredNorm() <= ball.radiusMm * ball.radiusMm)
+          {
+            lo = { std::min(lo[0], i), std::min(lo[1], j), std::min(lo[2], k) };
+            hi = { std::max(hi[0], i), std::max(hi[1], j), std::max(hi[2], k) };
+            break;
+          }
+      }
+  IndexBox box;
+  for (unsigned a = 0; a < 3; ++a)
+  {
+    box.first[a] = lo[a];
+    box.size[a] = hi[a] >= lo[a] ? hi[a] - lo[a] + 1 : 0;
+  }
+  return box;
+}
+
+} // namespace
+
 WallDistanceField WallDistanceField::FromLumen(const LabelImage& lumen, double bandMm)
+{
+  return FromLumen(lumen, bandMm, {});
+}
+
+WallDistanceField WallDistanceField::FromLumen(const LabelImage& lumen, double bandMm, const std::vector<Ball>& region)
 {
   CheckRange("bandMm", bandMm, 1.0, 100.0, "mm");
   const auto spacing = lumen.GetSpacing();
   std::array<long, 3> pad{};
   for (unsigned a = 0; a < 3; ++a)
     pad[a] = static_cast<long>(std::ceil(bandMm / spacing[a])) + 1;
-  const IndexBox found = ForegroundBox(lumen);
+  const IndexBox found = region.empty() ? ForegroundBox(lumen) : ForegroundBoxWithin(lumen, region);
   if (found.Empty())
-    throw InputError("The lumen mask is empty (no non-zero voxel); there is no vessel wall to fit to.");
+    throw InputError(region.empty() ? "The lumen mask is empty (no non-zero voxel); there is no vessel wall to fit to."
+                                    : "No lumen voxel lies near the stent's rings; there is no vessel wall to fit to.");
   // The band may reach beyond the image: voxels there are not lumen.
   IndexBox box;
   for (unsigned a = 0; a < 3; ++a)
@@ -43,8 +105,13 @@ WallDistanceField WallDistanceField::FromLumen(const LabelImage& lumen, double b
     outside.voxels[flat] = inside.voxels[flat] ? 0 : 1;
   }
   const std::array<double, 3> s{ spacing[0], spacing[1], spacing[2] };
-  const DistanceField in = DistanceInsideMask(inside, s, true, static_cast<float>(bandMm + 2.0 * s[2]));
-  const DistanceField out = DistanceInsideMask(outside, s, false, static_cast<float>(bandMm + 2.0 * s[2]));
+  // The two propagations are independent: the inner one runs on a second thread (the machine
+  // we plan on has two cores; the result does not depend on the order).
+  const float reach = static_cast<float>(bandMm + 2.0 * s[2]);
+  std::future<DistanceField> inFuture =
+    std::async(std::launch::async, [&inside, &s, reach] { return DistanceInsideMask(inside, s, true, reach); });
+  const DistanceField out = DistanceInsideMask(outside, s, false, reach);
+  const DistanceField in = inFuture.get();
 
   WallDistanceField field;
   field.m_Size = box.size;

@@ -11,8 +11,16 @@
 /// Deeper than the band inside the lumen φ is −`bandMm`; beyond it outside, `bandMm` with gradient 0
 /// (only the shell around the wall is computed: the forces act there).
 ///
-/// Input: a lumen LabelImage (non-zero = lumen; any grid; spacing and direction honoured).
-/// Errors: InputError for an empty mask or a band outside [1, 100] mm.
+/// The field may be limited to a region — balls around the places a surface can reach (the
+/// stent's rings, StentReach in StentMesh.h): then the box is the bounding box of the lumen voxels
+/// inside those balls (plus the band), which on a whole aorto-iliac tree is a few times smaller
+/// than the lumen's. Where the lumen crosses that box's faces the face acts as a wall for φ
+/// inside, so the balls must reach well past (≥ band + 2 voxels) anywhere a vertex can go.
+///
+/// Input: a lumen LabelImage (non-zero = lumen; any grid; spacing and direction honoured);
+/// optionally the region, balls in LPS mm.
+/// Errors: InputError for an empty mask (or no lumen voxel in the region) or a band outside
+/// [1, 100] mm.
 #pragma once
 
 #include <vector>
@@ -26,6 +34,8 @@ class WallDistanceField
 {
 public:
   static WallDistanceField FromLumen(const LabelImage& lumen, double bandMm = 5.0);
+  /// The field over the lumen within `region` only (see above); an empty region means the whole lumen.
+  static WallDistanceField FromLumen(const LabelImage& lumen, double bandMm, const std::vector<Ball>& region);
 
   /// φ at `lps` (mm); writes ∇φ (LPS, dimensionless) to `gradient` when it is given.
   double Sample(const Point3& lps, Eigen::Vector3d* gradient = nullptr) const;

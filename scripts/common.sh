@@ -7,11 +7,12 @@ SGP_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 SGP_BUILD=${SGP_BUILD:-$SGP_ROOT/build}
 SGP_PYTHON=/usr/bin/python3 # Debian's, with numpy; `python3` on the PATH may be another one
 
-# Compilers and CMake; ITK 5.2 (with its Eigen 3.3.9), VTK 9.1, TCLAP, GoogleTest, Google Benchmark;
+# Compilers and CMake; ITK 5.2 (with its Eigen 3.3.9), VTK 9.1, TCLAP, GoogleTest, Google Benchmark,
+# nlohmann JSON;
 # Debian's Python modules for the test scripts; the GDCM tools ITK's CMake config refers to.
 SGP_PACKAGES=(
   cmake g++ make
-  libinsighttoolkit5-dev libvtk9-dev libtclap-dev libgtest-dev libbenchmark-dev
+  libinsighttoolkit5-dev libvtk9-dev libtclap-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev
   python3 python3-numpy python3-skimage python3-jsonschema python3-vtk9
   libgdcm-tools
 )

@@ -91,8 +91,8 @@ Anatomy BuildAnatomy(const PhantomParams& p)
     if (z < sacBottom)
       return rDistal;
     const double u = (sacTop - z) / (sacTop - sacBottom);
-    const double bump = std::sin(pi * u);
-    return rNeck + (rDistal - rNeck) * u + amplitude * bump * bump;
+    // A half sine: the sac starts at a shoulder (slope πA/L), so the neck has a definite end.
+    return rNeck + (rDistal - rNeck) * u + amplitude * std::sin(pi * u);
   };
   double rMax = 0.0, zMax = sacTop;
   for (double z = sacBottom; z <= sacTop; z += 0.01)
@@ -108,9 +108,8 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   // length is kept, so the radius profile and every length along the aorta are unchanged).
   const double beta = p.neckAngleDeg * pi / 180.0;
   const Eigen::Vector3d neckDirection(0.0, -std::sin(beta), std::cos(beta));
-  const auto onAxis = [=](double h) {
-    return h <= sacTop ? Point3(0, 0, h) : Point3(Point3(0, 0, sacTop) + (h - sacTop) * neckDirection);
-  };
+  const auto onAxis = [=](double h)
+  { return h <= sacTop ? Point3(0, 0, h) : Point3(Point3(0, 0, sacTop) + (h - sacTop) * neckDirection); };
   anatomy.tubes.push_back({ "aorta",
                             { onAxis(topZ), onAxis(sacTop), Point3(0, 0, 0) },
                             [=](double s) { return radiusAtZ(topZ - s); },
@@ -134,7 +133,7 @@ Anatomy BuildAnatomy(const PhantomParams& p)
                                          { iliacEnd[side], iliacEnd[side] + 40.0 * Unit(lateral * 0.45, 0.55, -0.7) },
                                          0.55 * r));
     const double renalZ = side == 0 ? rightRenalZ : leftRenalZ;
-    const Point3 hilum = onAxis(renalZ) + Point3(lateral * 64.0, 10.0, -5.0);
+    const Point3 hilum = onAxis(renalZ) + Point3(lateral * 64.0, 10.0, 0.0);
     anatomy.tubes.push_back(StraightTube(prefix + "Renal", { onAxis(renalZ), hilum }, renalRadiusMm));
     if (p.includeKidneys)
     {
@@ -143,9 +142,9 @@ Anatomy BuildAnatomy(const PhantomParams& p)
     truth.landmarks.push_back({ prefix + "RenalOstium", onAxis(renalZ) + Point3(lateral * rNeck, 0, 0) });
     truth.landmarks.push_back({ prefix + "IliacBifurcation", iliacEnd[side] });
   }
-  anatomy.tubes.push_back(StraightTube("superiorMesenteric",
-                                       { onAxis(smaZ), onAxis(smaZ) + Point3(0, -35, -5), onAxis(smaZ) + Point3(0, -45, -60) },
-                                       visceralRadiusMm));
+  anatomy.tubes.push_back(StraightTube(
+    "superiorMesenteric", { onAxis(smaZ), onAxis(smaZ) + Point3(0, -35, -5), onAxis(smaZ) + Point3(0, -45, -60) },
+    visceralRadiusMm));
   anatomy.tubes.push_back(
     StraightTube("coeliac", { onAxis(coeliacZ), onAxis(coeliacZ) + Point3(0, -30, 5) }, visceralRadiusMm));
   if (p.includeBone)

@@ -7,11 +7,13 @@
 ///    neck leans anteriorly by `neckAngleDeg` (β; the renal, mesenteric and coeliac arteries go
 ///    with it; lengths along the aorta are kept). Radius r(z), z the height along the aorta:
 ///    the neck radius above the sac; in the sac (length L, top at `sacTopZ`) a linear blend from
-///    the neck radius to the distal-neck radius plus a sin² bump that reaches `maxAneurysmDiameterMm`
-///    at mid-sac; the distal-neck radius from the sac to the bifurcation.
+///    the neck radius to the distal-neck radius plus a half-sine bump that reaches
+///    `maxAneurysmDiameterMm` near mid-sac — so the sac starts at a shoulder and the neck has a
+///    definite end, as the neck-length rule needs; the distal-neck radius from the sac to the
+///    bifurcation.
 ///  - **renal arteries** (radius 3 mm): the right one at the lower level (it is the lowest renal;
 ///    the lower edge of its ostium is the proximal implantation site), the left 6 mm higher;
-///    they run laterally to the kidneys' hila. The patient's right is −x in LPS.
+///    they run horizontally (laterally and slightly posteriorly) to the kidneys' hila. The patient's right is −x in LPS.
 ///  - **superior mesenteric** and **coeliac** arteries leave anteriorly (−y) above the renals.
 ///  - **common iliacs** leave the bifurcation 25° from the midline, 55 mm long, then split into
 ///    **external** (continuing caudally) and **internal** iliacs (posterior and lateral).

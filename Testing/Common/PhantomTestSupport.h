@@ -6,10 +6,22 @@
 #include <array>
 #include <stdexcept>
 
+#include <Eigen/Geometry>
+
 #include "Phantom/AorticPhantom.h"
 
 namespace sgp::testing
 {
+
+/// An oblique grid with one axis flipped (det = −1): rotated 30° about z and 20° about x, j
+/// reversed — what a gantry-tilted scan stored in a flipped order looks like.
+inline Eigen::Matrix3d ObliqueFlippedDirection()
+{
+  const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(30.0 * M_PI / 180.0, Eigen::Vector3d::UnitZ()) *
+                                    Eigen::AngleAxisd(20.0 * M_PI / 180.0, Eigen::Vector3d::UnitX()))
+                                     .toRotationMatrix();
+  return rotation * Eigen::Vector3d(1.0, -1.0, 1.0).asDiagonal(); // j axis flipped: det = −1
+}
 
 /// Voxel counts of a binary segmentation against the truth labels.
 struct Overlap

@@ -1,10 +1,15 @@
 /// \file PipelineSupport.h
-/// The planning pipeline up to the centerlines, as the CLI runs it, for tests.
+/// The planning pipeline as the CLI runs it — up to the centerlines, or on to the measurements —
+/// for tests.
 #pragma once
 
+#include <optional>
+
+#include "ActiveContour.h"
 #include "AssignInscribedRadii.h"
 #include "GrowLumenRegion.h"
 #include "LabelAortoIliacTree.h"
+#include "MeasureAnatomy.h"
 #include "ThinLabelMap.h"
 
 namespace sgp::testing
@@ -21,6 +26,35 @@ inline CenterlineTree CenterlinesFromMask(const LabelImage& mask)
 inline CenterlineTree CenterlinesFromCt(const CtImage& ct, const Point3& seedLps)
 {
   return CenterlinesFromMask(*GrowLumenRegion(ct, seedLps, RegionGrowingParams{}).mask);
+}
+
+/// Everything the measurement stage produced, and what it was measured on.
+struct MeasuredPlan
+{
+  LabelImage::Pointer lumen;
+  CenterlineTree tree;
+  ProximalSite site;
+  StentMesh mesh;
+  ActiveContourResult fit;
+  Measurements measurements;
+};
+
+/// Segmentation, centerlines, proximal site, stent mesh from the site, measure-mode fit and
+/// measurements, with the CLI's default parameters.
+inline MeasuredPlan MeasureFromCt(const CtImage& ct,
+                                  const Point3& seedLps,
+                                  const std::optional<Point3>& lowestRenalOstiumLps = {})
+{
+  MeasuredPlan plan;
+  plan.lumen = GrowLumenRegion(ct, seedLps, RegionGrowingParams{}).mask;
+  plan.tree = CenterlinesFromMask(*plan.lumen);
+  plan.site = FindProximalSite(plan.tree, lowestRenalOstiumLps);
+  StentMeshParams meshParams;
+  meshParams.proximalAbscissaMm = plan.site.abscissaMm;
+  plan.mesh = BuildStentMesh(plan.tree, meshParams);
+  plan.fit = FitActiveContour(plan.mesh, WallDistanceField::FromLumen(*plan.lumen), ActiveContourParams::Measure());
+  plan.measurements = MeasureAnatomy(plan.tree, plan.mesh, plan.fit.V, plan.site);
+  return plan;
 }
 
 } // namespace sgp::testing

@@ -59,8 +59,8 @@ TEST(AorticPhantom, SizingTruth_FromTheRadiusProfile)
   const PhantomSizing& s = phantom.truth.sizing;
   EXPECT_DOUBLE_EQ(s.proximalNeckDiameter, 22.0);
   EXPECT_GT(s.neckDiameter15mm, 22.0);
-  // The sac's blend from 11 to 9 mm radius moves the maximum 0.5 mm off mid-sac: +0.01 mm.
-  EXPECT_NEAR(s.maxAneurysmDiameter, 55.0, 0.02);
+  // The sac's blend from 11 to 9 mm radius moves the maximum 0.9 mm off mid-sac: +0.023 mm.
+  EXPECT_NEAR(s.maxAneurysmDiameter, 55.0, 0.03);
   EXPECT_DOUBLE_EQ(s.distalNeckMinDiameter, 18.0);
   EXPECT_DOUBLE_EQ(s.proximalNeckLength, 9.0);
   EXPECT_DOUBLE_EQ(s.proximalSiteToBifurcationLength, 20.0 + 80.0 + 9.0);

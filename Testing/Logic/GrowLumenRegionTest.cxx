@@ -15,17 +15,10 @@ namespace
 {
 
 using testing::CompareWithTruth;
+using testing::ObliqueFlippedDirection;
 
 /// The Dice bar of the foundation issue: boundary voxels of a lumen a few voxels across.
 constexpr double minimumDice = 0.95;
-
-Eigen::Matrix3d ObliqueFlippedDirection()
-{
-  const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(30.0 * M_PI / 180.0, Eigen::Vector3d::UnitZ()) *
-                                    Eigen::AngleAxisd(20.0 * M_PI / 180.0, Eigen::Vector3d::UnitX()))
-                                     .toRotationMatrix();
-  return rotation * Eigen::Vector3d(1.0, -1.0, 1.0).asDiagonal(); // j axis flipped: det = −1
-}
 
 std::string MessageOf(const std::function<void()>& f)
 {
@@ -285,7 +278,8 @@ TEST_F(SmallPhantom, SeedInVesselNarrowerThanOpening_InputError)
 {
   RegionGrowingParams params;
   params.leakOpeningRadiusMm = 5.0; // a 10 mm ball cannot fit in the 6 mm renal artery
-  const Point3 inRightRenal(-30, 10.0 * 30 / 64, phantom->truth.landmarks[0].lps.z() - 5.0 * 30 / 64);
+  // 30 mm out along the horizontal renal (64 mm lateral, 10 mm posterior to the hilum).
+  const Point3 inRightRenal(-30, 10.0 * 30 / 64, phantom->truth.landmarks[0].lps.z());
   ASSERT_EQ(phantom->truth.landmarks[0].name, "rightRenalOstium");
   const std::string message = MessageOf([&] { GrowLumenRegion(*phantom->ct, inRightRenal, params); });
   EXPECT_NE(message.find("narrower than the leak-cutting opening (10.0 mm across)"), std::string::npos) << message;

@@ -1,0 +1,115 @@
+#!/usr/bin/python3
+"""The whole planning job, timed against the floor of merely reading its input (issue 5).
+
+Usage: benchmark_whole_job.py BUILD_DIR [--workdir DIR] [--repeat N]
+
+Generates a 512 x 512 x 400 phantom (0.7 x 0.7 x 1.0 mm, vertebra and kidneys; gzip NRRD, as
+Slicer and PACS exports write them), then, in the same run and N times each (best kept, so a
+busy moment of the machine does not count):
+  - the floor: sgpReadVolume, the CLI's own reader, reading and decompressing the file and
+    nothing else (a separate process, like the CLI);
+  - the whole job: StentGraftSimulation as Slicer starts it, with every output requested
+    (read -> segmentation -> centerlines -> ACM -> measurements -> label map, centerlines,
+    landmarks, stent model, measurements table, diameter profile, report, return file);
+and prints a Markdown table: wall times, their ratio against the 3x target, the peak resident
+memory of the job against 2 GiB, and the per-stage times from the job's <filter-time> tags.
+Timings are asserted nowhere else; tests check correctness.
+"""
+import argparse
+import os
+import platform
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+TARGET_RATIO = 3.0
+TARGET_MIB = 2048.0
+
+
+def cpu_name():
+    try:
+        for line in open("/proc/cpuinfo"):
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or "unknown CPU"
+
+
+def run_measured(argv):
+    """Runs argv; returns (seconds, peak RSS in MiB, stdout, stderr, exit code)."""
+    start = time.monotonic()
+    with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
+        process = subprocess.Popen(argv, stdout=out, stderr=err)
+        _, status, usage = os.wait4(process.pid, 0)
+        seconds = time.monotonic() - start
+        out.seek(0)
+        err.seek(0)
+        return (seconds, usage.ru_maxrss / 1024.0, out.read().decode(), err.read().decode(),
+                os.waitstatus_to_exitcode(status))
+
+
+def best_of(argv, repeat, label):
+    best = None
+    for _ in range(repeat):
+        result = run_measured(argv)
+        if result[4] != 0:
+            sys.exit(f"{label} failed (exit {result[4]}): {result[3].strip()}")
+        if best is None or result[0] < best[0]:
+            best = result
+    return best
+
+
+def whole_job_rows(build, work, repeat=3):
+    """[(measurement, result, target, met)] for the README table."""
+    phantom = os.path.join(build, "CLI", "SyntheticAorticPhantom")
+    cli = os.path.join(build, "CLI", "StentGraftSimulation")
+    reader = os.path.join(build, "Benchmarks", "sgpReadVolume")
+    volume = os.path.join(work, "phantom-512.nrrd")
+    params = os.path.join(work, "phantom.params")
+    subprocess.run([phantom, "--returnparameterfile", params, "--spacingMm", "0.7,0.7,1.0", "--sizeVoxels",
+                    "512,512,400", "--includeBone", "--includeKidneys", volume], check=True, capture_output=True)
+    seed = dict(line.split(" = ", 1) for line in open(params).read().splitlines())["seedRas"]
+    out = lambda name: os.path.join(work, name)  # noqa: E731
+    job = [cli, "--returnparameterfile", out("run.params"), "--seed", seed,
+           "--outputLabelMap", out("lumen.nrrd"), "--outputCenterlines", out("centerlines.vtp"),
+           "--outputLandmarks", out("landmarks.mrk.json"), "--outputStentModel", out("stent.vtp"),
+           "--outputMeasurements", out("measurements.csv"), "--outputDiameterProfile", out("profile.csv"),
+           "--outputReport", out("report.json"), volume]
+    floor_s = best_of([reader, volume], repeat, "sgpReadVolume")[0]
+    job_s, job_mib, stdout, _, _ = best_of(job, repeat, "StentGraftSimulation")
+    ratio = job_s / floor_s
+    rows = [("Reading floor: sgpReadVolume, gzip NRRD 512 x 512 x 400 (best of %d)" % repeat, "%.2f s" % floor_s, "",
+             None),
+            ("Whole job: StentGraftSimulation, read -> segment -> centerlines -> ACM -> measurements -> all outputs "
+             "(best of %d)" % repeat, "%.2f s = %.2f x the floor" % (job_s, ratio), "<= %g x" % TARGET_RATIO,
+             ratio <= TARGET_RATIO),
+            ("Peak memory of the whole job", "%.0f MiB" % job_mib, "< %.0f MiB" % TARGET_MIB, job_mib < TARGET_MIB)]
+    stages = re.findall(r"<filter-end>\s*<filter-name>([^<]*)</filter-name>\s*<filter-time>([^<]*)</filter-time>",
+                        stdout)
+    for name, seconds in stages:
+        rows.append(("  stage %s" % name, "%.2f s" % float(seconds), "", None))
+    return rows
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("build")
+    parser.add_argument("--workdir", default=None)
+    parser.add_argument("--repeat", type=int, default=3)
+    args = parser.parse_args()
+    work = args.workdir or tempfile.mkdtemp(prefix="sgp-whole-job-")
+    os.makedirs(work, exist_ok=True)
+    rows = whole_job_rows(os.path.abspath(args.build), work, args.repeat)
+    print("Machine: %s, %d cores, %s" % (cpu_name(), os.cpu_count(), platform.platform()))
+    print()
+    print("| measurement | result | target | met |")
+    print("| --- | --- | --- | --- |")
+    for what, value, target, met in rows:
+        print("| %s | %s | %s | %s |" % (what, value, target, "" if met is None else ("yes" if met else "NO")))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,83 @@
+#include "DeviceSelectionToJson.h"
+
+#include <cmath>
+
+namespace sgp
+{
+
+namespace
+{
+
+using Json = nlohmann::json;
+
+/// JSON has no NaN: an unknown number is null.
+Json NumberOrNull(double value)
+{
+  return std::isfinite(value) ? Json(value) : Json(nullptr);
+}
+
+Json TextOrNull(const std::string& text)
+{
+  return text.empty() ? Json(nullptr) : Json(text);
+}
+
+Json SizeToJson(const SizeChoice& choice)
+{
+  return { { "diameterMm", NumberOrNull(choice.diameterMm) },
+           { "oversizingPercent", NumberOrNull(choice.oversizingPercent) },
+           { "profileFr", NumberOrNull(choice.profileFr) },
+           { "forced", choice.forced },
+           { "reason", TextOrNull(choice.reason) } };
+}
+
+Json CheckToJson(const CriterionCheck& c)
+{
+  return { { "name", c.name },
+           { "status", ToString(c.status) },
+           { "value", NumberOrNull(c.value) },
+           { "unit", c.unit },
+           { "min", NumberOrNull(c.min) },
+           { "max", NumberOrNull(c.max) },
+           { "margin", NumberOrNull(c.margin) },
+           { "requirement", c.requirement },
+           { "text", c.text },
+           { "evidence", c.evidence } };
+}
+
+Json FamilyToJson(const FamilyEvaluation& e)
+{
+  Json checks = Json::array();
+  for (const CriterionCheck& c : e.checks)
+    checks.push_back(CheckToJson(c));
+  return { { "name", e.family },
+           { "withinIfu", e.WithinIfu() },
+           { "failCount", e.Count(CheckStatus::Fail) },
+           { "indeterminateCount", e.Count(CheckStatus::Indeterminate) },
+           { "mainBody", SizeToJson(e.mainBody) },
+           { "rightLimb", SizeToJson(e.rightLimb) },
+           { "leftLimb", SizeToJson(e.leftLimb) },
+           { "mainBodyAccessSide", TextOrNull(e.mainBodyAccessSide) },
+           { "checks", checks } };
+}
+
+} // namespace
+
+nlohmann::json DeviceSelectionToJson(const DeviceSelection& s)
+{
+  Json families = Json::array();
+  for (const FamilyEvaluation& e : s.families)
+    families.push_back(FamilyToJson(e));
+  const bool any = s.recommended >= 0 && s.recommended < int(s.families.size());
+  Json recommendation = { { "family", any ? Json(s.families[size_t(s.recommended)].family) : Json(nullptr) },
+                          { "withinIfu", s.recommendedWithinIfu },
+                          { "fullyChecked", s.recommendedFullyChecked },
+                          { "summary", s.summary },
+                          { "reasons", s.reasons } };
+  return { { "proximalOversizingTargetPercent", s.proximalTargetPercent },
+           { "limbOversizingTargetPercent", s.limbTargetPercent },
+           { "forced", s.forced },
+           { "recommendation", recommendation },
+           { "families", families } };
+}
+
+} // namespace sgp

@@ -1,0 +1,33 @@
+/// \file DeviceSelectionToJson.h
+/// The device selection as a JSON object, for the planning report (the CLI's JSON output).
+///
+/// Shape (numbers in mm, %, degrees or Fr as their names say; NaN written as null):
+///
+///     { "proximalOversizingTargetPercent": 15, "limbOversizingTargetPercent": 17.5,
+///       "forced": false,
+///       "recommendation": { "family": "Endurant II" | null, "withinIfu": true,
+///                           "fullyChecked": true, "summary": "…", "reasons": [ "…" ] },
+///       "families": [ { "name": "…", "withinIfu": true,
+///                       "failCount": 0, "indeterminateCount": 0,
+///                       "mainBody": SIZE, "rightLimb": SIZE, "leftLimb": SIZE,
+///                       "mainBodyAccessSide": "right" | "left" | null,
+///                       "checks": [ { "name": "neck length", "status": "pass"|"fail"|"indeterminate",
+///                                     "value": 12.0, "unit": "mm", "min": 15, "max": null,
+///                                     "margin": -3.0, "requirement": "≥ 15 mm",
+///                                     "text": "…", "evidence": "…" } ] } ] }
+///
+/// where SIZE = { "diameterMm": 25 | null, "oversizingPercent": 13.6 | null,
+///                "profileFr": 18 | null, "forced": false, "reason": "…" | null }.
+/// `recommendation.family` is null when no device is within IFU. Does not throw.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "../SelectDevice.h"
+
+namespace sgp
+{
+
+nlohmann::json DeviceSelectionToJson(const DeviceSelection& selection);
+
+} // namespace sgp

@@ -1,0 +1,113 @@
+#include "IO/WriteMeasurements.h"
+
+#include <cmath>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "IO/WriteReturnParameters.h"
+#include "IO/WriteTextFile.h"
+
+namespace sgp
+{
+namespace
+{
+
+std::string Number(double value)
+{
+  return std::isfinite(value) ? FormatReturnValue(value) : std::string();
+}
+
+std::string Quoted(const std::string& text)
+{
+  std::string out = "\"";
+  for (char c : text)
+    out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+nlohmann::json JsonNumber(double value)
+{
+  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
+
+nlohmann::json JsonPoint(const Point3& p)
+{
+  return nlohmann::json::array({ p.x(), p.y(), p.z() });
+}
+
+} // namespace
+
+std::string FormatMeasurementsTable(const Measurements& measurements)
+{
+  std::ostringstream out;
+  out << "name,value,unit,definition,vessel,abscissaMm,minDiameterMm,maxDiameterMm,areaDiameterMm\n";
+  for (const Measurement& m : measurements.values)
+  {
+    out << m.name << ',' << Number(m.value) << ',' << Quoted(m.unit) << ',' << Quoted(m.definition) << ',' << m.vessel
+        << ',' << Number(m.abscissaMm) << ',' << Number(m.minMm) << ',' << Number(m.maxMm) << ',' << Number(m.areaMm)
+        << '\n';
+  }
+  return out.str();
+}
+
+std::string FormatDiameterProfiles(const Measurements& measurements)
+{
+  std::ostringstream out;
+  out << "vessel,abscissaMm,meanDiameterMm,minDiameterMm,maxDiameterMm,areaDiameterMm\n";
+  for (const DiameterProfile& profile : measurements.profiles)
+    for (const RingDiameters& r : profile.rings)
+      out << profile.vessel << ',' << Number(r.abscissaMm) << ',' << Number(r.meanMm) << ',' << Number(r.minMm) << ','
+          << Number(r.maxMm) << ',' << Number(r.areaMm) << '\n';
+  return out.str();
+}
+
+void WriteMeasurementsTable(const Measurements& measurements, const std::string& path)
+{
+  WriteTextFile(FormatMeasurementsTable(measurements), path, "measurements table");
+}
+
+void WriteDiameterProfiles(const Measurements& measurements, const std::string& path)
+{
+  WriteTextFile(FormatDiameterProfiles(measurements), path, "diameter profile table");
+}
+
+nlohmann::json MeasurementsToJson(const Measurements& measurements)
+{
+  nlohmann::json out;
+  const ProximalSite& site = measurements.site;
+  out["proximalSite"] = { { "source", ToString(site.source) },
+                          { "abscissaMm", site.abscissaMm },
+                          { "lps", JsonPoint(site.lps) },
+                          { "renal", site.renal } };
+  out["aorticBifurcation"] = { { "lps", JsonPoint(measurements.bifurcationLps) },
+                               { "abscissaMm", measurements.bifurcationAbscissaMm } };
+  nlohmann::json values = nlohmann::json::array();
+  for (const Measurement& m : measurements.values)
+  {
+    nlohmann::json row = { { "name", m.name },     { "value", JsonNumber(m.value) },
+                           { "unit", m.unit },     { "definition", m.definition },
+                           { "vessel", m.vessel }, { "abscissaMm", JsonNumber(m.abscissaMm) } };
+    if (std::isfinite(m.minMm))
+    {
+      row["minDiameterMm"] = m.minMm;
+      row["maxDiameterMm"] = m.maxMm;
+      row["areaDiameterMm"] = m.areaMm;
+    }
+    values.push_back(row);
+  }
+  out["measurements"] = values;
+  nlohmann::json profiles = nlohmann::json::object();
+  for (const DiameterProfile& profile : measurements.profiles)
+  {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const RingDiameters& r : profile.rings)
+      rows.push_back({ r.abscissaMm, r.meanMm, r.minMm, r.maxMm, r.areaMm });
+    profiles[profile.vessel] = rows;
+  }
+  out["diameterProfiles"] = profiles;
+  out["warnings"] = measurements.warnings;
+  return out;
+}
+
+} // namespace sgp

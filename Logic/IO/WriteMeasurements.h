@@ -1,0 +1,37 @@
+/// \file WriteMeasurements.h
+/// The measurements as files Slicer and a spreadsheet read: two CSV tables (Slicer loads a `.csv`
+/// `<table>` output as a vtkMRMLTableNode) and the measurement part of the JSON report.
+///
+/// Measurements table, one row per value (MeasureAnatomy.h), header
+///   `name,value,unit,definition,vessel,abscissaMm,minDiameterMm,maxDiameterMm,areaDiameterMm`
+/// — value empty when not measured, the diameter columns empty for non-diameters. Text fields are
+/// double-quoted (definitions contain commas). Numbers with up to 10 significant digits.
+/// Diameter profile table, one row per ring of the fitted surface, header
+///   `vessel,abscissaMm,meanDiameterMm,minDiameterMm,maxDiameterMm,areaDiameterMm`
+/// — vessel aorta (abscissa from the aorta's top), rightIliac, leftIliac (from the bifurcation).
+/// All lengths mm, LPS where a point is given.
+/// \throws InputError naming the path when a file cannot be written.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "MeasureAnatomy.h"
+
+namespace sgp
+{
+
+std::string FormatMeasurementsTable(const Measurements& measurements);
+std::string FormatDiameterProfiles(const Measurements& measurements);
+void WriteMeasurementsTable(const Measurements& measurements, const std::string& path);
+void WriteDiameterProfiles(const Measurements& measurements, const std::string& path);
+
+/// {"proximalSite": {"source", "abscissaMm", "lps", "renal"}, "aorticBifurcation": {"lps",
+/// "abscissaMm"}, "measurements": [{"name", "value" (null when not measured), "unit",
+/// "definition", "vessel", "abscissaMm", and for diameters "minDiameterMm", "maxDiameterMm",
+/// "areaDiameterMm"}], "diameterProfiles": {vessel: [[abscissaMm, mean, min, max, area], …]},
+/// "warnings": […]}.
+nlohmann::json MeasurementsToJson(const Measurements& measurements);
+
+} // namespace sgp

@@ -1,0 +1,13 @@
+"""The parts of the StentGraftPlanner scripted module that do not need Slicer.
+
+Slicer's module scanner loads every ``*.py`` file next to ``StentGraftPlanner.py`` as a module
+candidate, so these helpers live in a package one folder down (the SlicerHeart pattern, STYLE.md
+B7). Everything here runs under a plain Python 3 with the standard library only, and is tested
+that way in CTest (``Testing/Python``).
+
+- ``Settings``: the panel's settings, their defaults (equal to the CLI XML's), their storage as
+  parameter-node strings, and the parameter dictionary handed to ``slicer.cli.run``.
+- ``Results``: reading what the CLI returns (return parameters, the diameter-profile table, the JSON
+  report) and formatting the device recommendation.
+- ``Appearance``: colours and opacities of the outputs and of the plot series.
+"""

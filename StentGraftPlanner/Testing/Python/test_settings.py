@@ -1,0 +1,184 @@
+#!/usr/bin/python3
+"""StentGraftPlannerLib.Settings: defaults, parameter-node strings, validation and the CLI dictionary.
+
+Run: /usr/bin/python3 -m unittest discover -s StentGraftPlanner/Testing/Python (stdlib only).
+"""
+import os
+import sys
+import unittest
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+from StentGraftPlannerLib import Settings  # noqa: E402
+
+DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "Data")
+
+
+class Node:
+    """Stands for an MRML node: the CLI dictionary must pass nodes through untouched."""
+
+    def __init__(self, name):
+        self.name = name
+
+
+def allNodes():
+    return {role.name: Node(role.name) for role in Settings.NODE_ROLES}
+
+
+ONE_POINT = {"seed": 1, "lowestRenalOstium": 1}
+
+
+class SettingsStringsTest(unittest.TestCase):
+    def test_RoundTrip_GivesBackEveryValueExactly(self):
+        settings = Settings.defaultSettings()
+        settings.update(lowerHu=123.25, acmToleranceMm=1e-7, verticesPerRing=32, thresholdMode="manual",
+                        deviceFamily="Zenith Flex", deviceCatalogPath="/tmp/my devices.json")
+        back, problems = Settings.settingsFromStrings(Settings.settingsToStrings(settings))
+        self.assertEqual(back, settings)
+        self.assertEqual(problems, [])
+
+    def test_MissingOrEmptyStrings_FallBackToDefaultsSilently(self):
+        back, problems = Settings.settingsFromStrings({"lowerHu": "", "upperHu": None})
+        self.assertEqual(back, Settings.defaultSettings())
+        self.assertEqual(problems, [])
+
+    def test_UnreadableValues_FallBackAndNameTheValue(self):
+        back, problems = Settings.settingsFromStrings(
+            {"lowerHu": "abc", "verticesPerRing": "16.5", "thresholdMode": "magic", "acmTau": "nan"})
+        self.assertEqual(back, Settings.defaultSettings())
+        self.assertEqual(len(problems), 4)
+        self.assertTrue(any("'abc'" in p and "lowerHu" in p for p in problems), problems)
+
+    def test_UnknownSettingName_IsRejected(self):
+        with self.assertRaises(KeyError):
+            Settings.settingsToStrings({"noSuchSetting": 1})
+
+    def test_FormatNumber_IsShortAndExact(self):
+        self.assertEqual(Settings.formatNumber(20.0), "20")
+        self.assertEqual(Settings.formatNumber(0.1), "0.1")
+        self.assertEqual(float(Settings.formatNumber(1 / 3)), 1 / 3)
+
+
+class SchemaTest(unittest.TestCase):
+    def test_NamesAndWidgets_AreUnique(self):
+        names = [s.name for s in Settings.SETTINGS] + [r.name for r in Settings.NODE_ROLES]
+        self.assertEqual(len(names), len(set(names)))
+        widgets = [s.widget for s in Settings.SETTINGS]
+        self.assertEqual(len(widgets), len(set(widgets)))
+
+    def test_Defaults_HaveTheirKindsType(self):
+        for s in Settings.SETTINGS:
+            expected = {"float": float, "int": int, "enum": str, "str": str}[s.kind]
+            self.assertIsInstance(s.default, expected, s.name)
+            if s.kind == "enum":
+                self.assertIn(s.default, s.choices, s.name)
+
+
+class DeviceArgumentTest(unittest.TestCase):
+    def test_Forms(self):
+        self.assertEqual(Settings.deviceArgument("auto", 0), "auto")
+        self.assertEqual(Settings.deviceArgument("", 26), "auto")
+        self.assertEqual(Settings.deviceArgument("  Excluder ", 0), "Excluder")
+        self.assertEqual(Settings.deviceArgument("Excluder", 28.5), "Excluder:28.5")
+        self.assertEqual(Settings.deviceArgument("Endurant II", 25.0), "Endurant II:25")
+
+    def test_ColonInFamily_IsRejected(self):
+        with self.assertRaisesRegex(ValueError, "'Bad:Name'"):
+            Settings.deviceArgument("Bad:Name", 0)
+
+
+class CatalogFamiliesTest(unittest.TestCase):
+    def test_SampleCatalog_GivesUniqueNamesInFileOrder(self):
+        with open(os.path.join(DATA, "devices-sample.json")) as f:
+            self.assertEqual(Settings.catalogFamilies(f.read()), ["Endurant II", "Excluder", "Zenith Flex"])
+
+    def test_TopLevelListAndDevicesKey_AreRead(self):
+        self.assertEqual(Settings.catalogFamilies('[{"family": "A"}]'), ["A"])
+        self.assertEqual(Settings.catalogFamilies('{"devices": [{"name": "B"}]}'), ["B"])
+
+    def test_NoFamily_RaisesValueError(self):
+        for text in ("{}", "[]", '{"families": [1, {"size": 3}]}', "not json"):
+            with self.assertRaises(ValueError, msg=text):
+                Settings.catalogFamilies(text)
+
+
+class ValidateTest(unittest.TestCase):
+    def test_Defaults_AreValid(self):
+        Settings.validateSettings(Settings.defaultSettings())
+
+    def test_ManualWindowUpsideDown_NamesBothValues(self):
+        settings = dict(Settings.defaultSettings(), thresholdMode="manual", lowerHu=700.0, upperHu=600.0)
+        with self.assertRaisesRegex(ValueError, "700 HU.*600 HU"):
+            Settings.validateSettings(settings)
+
+    def test_UpsideDownWindowInAutoMode_IsIgnored(self):
+        Settings.validateSettings(dict(Settings.defaultSettings(), lowerHu=700.0, upperHu=600.0))
+
+    def test_OversizingRange_MustBeOrderedAndBounded(self):
+        for low, high in ((20.0, 10.0), (15.0, 15.0), (-5.0, 10.0), (10.0, 60.0)):
+            settings = dict(Settings.defaultSettings(), oversizingMinPercent=low, oversizingMaxPercent=high)
+            with self.assertRaisesRegex(ValueError, "oversizing range", msg=(low, high)):
+                Settings.validateSettings(settings)
+
+    def test_NegativeForcedDiameter_IsRejected(self):
+        with self.assertRaisesRegex(ValueError, "-3 mm"):
+            Settings.validateSettings(dict(Settings.defaultSettings(), deviceDiameterMm=-3.0))
+
+
+class BuildCliParametersTest(unittest.TestCase):
+    def build(self, settings=None, nodes=None, counts=ONE_POINT):
+        return Settings.buildCliParameters(settings or Settings.defaultSettings(), nodes or allNodes(), counts,
+                                           "/tmp/report.json")
+
+    def test_Defaults_GiveEveryCliSettingWithItsType(self):
+        parameters = self.build()
+        for s in Settings.SETTINGS:
+            if s.cli:
+                self.assertEqual(parameters[s.name], s.default, s.name)
+                self.assertIs(type(parameters[s.name]), type(s.default), s.name)
+            else:
+                self.assertNotIn(s.name, parameters)
+        self.assertEqual(parameters["device"], "auto")
+        self.assertEqual(parameters["proximalOversizing"], "10,20")  # pre-joined: no ", " from slicer.cli
+        self.assertEqual(parameters["outputReport"], "/tmp/report.json")
+        self.assertNotIn("deviceCatalog", parameters)  # the CLI's default: the bundled catalogue
+
+    def test_Nodes_ArePassedThroughUnderTheirRoles(self):
+        nodes = allNodes()
+        parameters = self.build(nodes=nodes)
+        for role in Settings.NODE_ROLES:
+            self.assertIs(parameters[role.name], nodes[role.name])
+
+    def test_DeviceChoices_AreCombined(self):
+        settings = dict(Settings.defaultSettings(), deviceFamily="Excluder", deviceDiameterMm=28.5,
+                        oversizingMinPercent=12.5, oversizingMaxPercent=25.0, deviceCatalogPath="/data/devices.json")
+        parameters = self.build(settings)
+        self.assertEqual(parameters["device"], "Excluder:28.5")
+        self.assertEqual(parameters["proximalOversizing"], "12.5,25")
+        self.assertEqual(parameters["deviceCatalog"], "/data/devices.json")
+
+    def test_RenalLandmarkWithoutPoints_IsLeftOut(self):
+        for nodes, counts in ((allNodes(), {"seed": 1, "lowestRenalOstium": 0}),
+                              (dict(allNodes(), lowestRenalOstium=None), {"seed": 1})):
+            self.assertNotIn("lowestRenalOstium", self.build(nodes=nodes, counts=counts))
+
+    def test_MissingVolume_IsAValueError(self):
+        with self.assertRaisesRegex(ValueError, "CT volume"):
+            self.build(nodes=dict(allNodes(), inputVolume=None))
+
+    def test_EmptyOrMissingSeed_IsAValueError(self):
+        for nodes, counts in ((allNodes(), {"seed": 0}), (dict(allNodes(), seed=None), {"seed": 1})):
+            with self.assertRaisesRegex(ValueError, "seed point list is empty"):
+                self.build(nodes=nodes, counts=counts)
+
+    def test_MissingOutputNode_IsAValueError(self):
+        with self.assertRaisesRegex(ValueError, "outputMeasurements"):
+            self.build(nodes=dict(allNodes(), outputMeasurements=None))
+
+    def test_InvalidSettings_AreRejectedBeforeAnythingElse(self):
+        settings = dict(Settings.defaultSettings(), oversizingMinPercent=30.0)
+        with self.assertRaises(ValueError):
+            self.build(settings)
+
+
+if __name__ == "__main__":
+    unittest.main()

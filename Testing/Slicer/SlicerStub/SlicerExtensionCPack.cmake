@@ -1,0 +1,10 @@
+# Stub of Slicer's extension CPack step: the last include of the top-level CMakeLists.txt.
+include(${CMAKE_CURRENT_LIST_DIR}/SlicerStubSupport.cmake)
+if(NOT EXISTS ${SGP_STUB_RECORD})
+  message(FATAL_ERROR "Slicer stub: CPack included without find_package(Slicer).")
+endif()
+file(STRINGS ${SGP_STUB_RECORD} recorded REGEX "^include\\(Slicer_EXTENSION_GENERATE_CONFIG\\)")
+if(NOT recorded)
+  message(FATAL_ERROR "Slicer stub: include(\${Slicer_EXTENSION_CPACK}) must follow include(\${Slicer_EXTENSION_GENERATE_CONFIG}).")
+endif()
+sgp_stub_record("include(Slicer_EXTENSION_CPACK)")

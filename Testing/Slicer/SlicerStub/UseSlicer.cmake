@@ -1,0 +1,35 @@
+# Stub of Slicer's UseSlicer.cmake: the scripted-module macro and the Python test macro.
+include(${CMAKE_CURRENT_LIST_DIR}/SlicerStubSupport.cmake)
+
+# The extension template sets its metadata before find_package(Slicer) and include(${Slicer_USE_FILE}).
+foreach(name HOMEPAGE CONTRIBUTORS DESCRIPTION ICONURL SCREENSHOTURLS DEPENDS)
+  if("${EXTENSION_${name}}" STREQUAL "")
+    message(FATAL_ERROR "Slicer stub: EXTENSION_${name} must be set before include(\${Slicer_USE_FILE}).")
+  endif()
+endforeach()
+sgp_stub_record("include(Slicer_USE_FILE) project=${PROJECT_NAME}")
+
+# slicerMacroBuildScriptedModule(NAME <name> SCRIPTS <py...> RESOURCES <files...>
+#                                [WITH_GENERIC_TESTS] [WITH_SUBDIR] [VERBOSE])
+function(slicerMacroBuildScriptedModule)
+  cmake_parse_arguments(MY "WITH_GENERIC_TESTS;WITH_SUBDIR;VERBOSE" "NAME" "SCRIPTS;RESOURCES" ${ARGN})
+  sgp_stub_require_arguments(slicerMacroBuildScriptedModule MY NAME SCRIPTS)
+  sgp_stub_require_files("slicerMacroBuildScriptedModule(${MY_NAME})" ${MY_SCRIPTS} ${MY_RESOURCES})
+  if(NOT "${MY_NAME}.py" IN_LIST MY_SCRIPTS)
+    message(FATAL_ERROR "Slicer stub: slicerMacroBuildScriptedModule(${MY_NAME}) does not list ${MY_NAME}.py.")
+  endif()
+  foreach(script IN LISTS MY_SCRIPTS)
+    if(NOT script MATCHES "\\.py$")
+      message(FATAL_ERROR "Slicer stub: script ${script} of ${MY_NAME} is not a .py file.")
+    endif()
+  endforeach()
+  sgp_stub_record("slicerMacroBuildScriptedModule ${MY_NAME} SCRIPTS ${MY_SCRIPTS} RESOURCES ${MY_RESOURCES}")
+endfunction()
+
+# slicer_add_python_unittest(SCRIPT <file> [SLICER_ARGS ...] [TESTNAME_PREFIX ...])
+function(slicer_add_python_unittest)
+  cmake_parse_arguments(MY "" "SCRIPT;TESTNAME_PREFIX" "SLICER_ARGS" ${ARGN})
+  sgp_stub_require_arguments(slicer_add_python_unittest MY SCRIPT)
+  sgp_stub_require_files(slicer_add_python_unittest ${MY_SCRIPT})
+  sgp_stub_record("slicer_add_python_unittest ${MY_SCRIPT}")
+endfunction()
