@@ -14,34 +14,12 @@ import argparse
 import json
 import os
 import platform
-import re
 import subprocess
 import sys
 import tempfile
-import time
 
-
-def cpu_name():
-    try:
-        for line in open("/proc/cpuinfo"):
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown CPU"
-
-
-def run_measured(argv):
-    """Runs argv; returns (seconds, peak RSS in MiB, stdout, stderr, exit code)."""
-    start = time.monotonic()
-    with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
-        process = subprocess.Popen(argv, stdout=out, stderr=err)
-        _, status, usage = os.wait4(process.pid, 0)
-        seconds = time.monotonic() - start
-        out.seek(0)
-        err.seek(0)
-        code = os.waitstatus_to_exitcode(status)
-        return seconds, usage.ru_maxrss / 1024.0, out.read().decode(), err.read().decode(), code
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from benchmark_whole_job import cpu_name, whole_job_rows  # noqa: E402  (the whole job vs its reading floor)
 
 
 def main():
@@ -90,8 +68,6 @@ def main():
                  "%.2f s vs %.2f s" % (ours, theirs), "faster than the peer", ours < theirs,
                  "agreement %s voxels (symmetric mean distance)" % row[5].strip()))
 
-    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-    from benchmark_whole_job import whole_job_rows  # the whole job against its reading floor
     for what, value, target, met in whole_job_rows(build, os.path.join(work, "whole-job")):
         rows.append((what, value, target, met, ""))
 

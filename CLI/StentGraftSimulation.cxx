@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <filesystem>
+#include <future>
 #include <optional>
 
 #include <nlohmann/json.hpp>
@@ -17,12 +19,18 @@
 #include "CLPSupport.h"
 #include "IO/OutputTransaction.h"
 #include "IO/ReadCtImage.h"
+#include "IO/DeviceSelectionToJson.h"
+#include "IO/ReadDeviceCatalog.h"
 #include "IO/WriteImage.h"
 #include "IO/WriteMeasurements.h"
 #include "IO/WriteReturnParameters.h"
 #include "IO/WriteStentModel.h"
 #include "IO/WriteTextFile.h"
+#include "Errors.h"
+#include "FitCheck.h"
+#include "Format.h"
 #include "MeasureAnatomy.h"
+#include "SelectDevice.h"
 #include "SlicerProgress.h"
 #include "StentGraftSimulationCLP.h"
 #include "StentGraftSimulationParameters.h"
@@ -43,6 +51,40 @@ void PrintWarnings(const std::vector<std::string>& warnings)
 std::string ReturnMeasurement(const sgp::Measurements& m, const std::string& name)
 {
   const double value = m.Value(name);
+  return sgp::FormatReturnValue(std::isfinite(value) ? value : -1.0);
+}
+
+/// The device catalogue installed beside the executable (CMake copies Resources/devices.json
+/// there, in the build tree and on install).
+std::string DefaultDeviceCatalog(const char* argv0)
+{
+  std::error_code error;
+  std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (error)
+    exe = std::filesystem::absolute(argv0, error);
+  return (exe.parent_path() / "devices.json").string();
+}
+
+/// The family to simulate: the recommended one, else the one with all three sizes chosen and the
+/// fewest failing checks (so that a plan outside every IFU still shows how the nearest graft
+/// sits); −1 when no family has all three sizes.
+int FamilyToSimulate(const sgp::DeviceSelection& selection)
+{
+  const auto complete = [](const sgp::FamilyEvaluation& f)
+  { return f.mainBody.Chosen() && f.rightLimb.Chosen() && f.leftLimb.Chosen(); };
+  if (selection.recommended >= 0 && complete(selection.families[selection.recommended]))
+    return selection.recommended;
+  int best = -1;
+  for (int i = 0; i < static_cast<int>(selection.families.size()); ++i)
+    if (complete(selection.families[i]) && (best < 0 || selection.families[i].Count(sgp::CheckStatus::Fail) <
+                                                          selection.families[best].Count(sgp::CheckStatus::Fail)))
+      best = i;
+  return best;
+}
+
+/// A size or length as a return value: −1 when there is none.
+std::string OrMinusOne(double value)
+{
   return sgp::FormatReturnValue(std::isfinite(value) ? value : -1.0);
 }
 
@@ -76,9 +118,34 @@ int main(int argc, char* argv[])
     std::optional<Point3> lowestRenalOstiumLps;
     if (!lowestRenalOstium.empty())
       lowestRenalOstiumLps = RasToLps(lowestRenalOstium);
-    const bool wantMeasurements =
-      !outputMeasurements.empty() || !outputDiameterProfile.empty() || !outputReport.empty();
+    const bool wantDevice = !outputSimulatedStentModel.empty() || !outputReport.empty() || !outputMeasurements.empty();
+    const bool wantMeasurements = wantDevice || !outputDiameterProfile.empty();
     const bool wantStent = wantMeasurements || !outputStentModel.empty() || !outputInitialStentModel.empty();
+    if (proximalOversizingRange.size() != 2 || limbOversizingRange.size() != 2)
+      throw InputError("proximalOversizingRange and limbOversizingRange take two values each (min,max in %); got " +
+                       std::to_string(proximalOversizingRange.size()) + " and " +
+                       std::to_string(limbOversizingRange.size()) + ".");
+    for (const auto& [name, range] : { std::pair{ "proximalOversizingRange", &proximalOversizingRange },
+                                       std::pair{ "limbOversizingRange", &limbOversizingRange } })
+      if ((*range)[0] > (*range)[1])
+        throw InputError(std::string(name) + " is " + FormatNumber((*range)[0]) + "," + FormatNumber((*range)[1]) +
+                         " %; expected min,max with min <= max (e.g. 10,20).");
+    DeviceSelectionParams selectionParams;
+    selectionParams.proximalOversizingMinPercent = proximalOversizingRange[0];
+    selectionParams.proximalOversizingMaxPercent = proximalOversizingRange[1];
+    selectionParams.limbOversizingMinPercent = limbOversizingRange[0];
+    selectionParams.limbOversizingMaxPercent = limbOversizingRange[1];
+    selectionParams.forcedDevice = device == "auto" ? std::string() : device;
+    ValidateDeviceSelectionParams(selectionParams);
+    // The catalogue is read before any heavy work: a broken catalogue fails at once.
+    const std::string catalogPath = deviceCatalog.empty() ? DefaultDeviceCatalog(argv[0]) : deviceCatalog;
+    DeviceCatalog catalog;
+    if (wantDevice)
+    {
+      catalog = ReadDeviceCatalog(catalogPath);
+      if (!selectionParams.forcedDevice.empty())
+        ParseForcedDevice(selectionParams.forcedDevice, catalog); // an unknown device fails here, not after the fit
+    }
     const bool wantCenterlines = wantStent || !outputCenterlines.empty() || !outputLandmarks.empty();
     SlicerProgress progress(std::cout, { { "ReadVolume", 2.0 },
                                          { "SegmentLumen", 4.0 },
@@ -86,6 +153,8 @@ int main(int argc, char* argv[])
                                          { "ExtractCenterlines", 1.0 },
                                          { "FitStent", 2.0 },
                                          { "MeasureAnatomy", 0.2 },
+                                         { "SelectDevice", 0.1 },
+                                         { "SimulateGraft", 1.0 },
                                          { "WriteOutputs", 1.0 } });
 
     progress.Begin("ReadVolume", "Reading the CT volume");
@@ -100,6 +169,16 @@ int main(int argc, char* argv[])
     lowerHuUsed = lumen.lowerHu;
     upperHuUsed = lumen.upperHu;
     edgeHuUsed = lumen.edgeHu;
+    // The label map is final now: compress and write it on the second core while the rest runs.
+    // (`labelMapWritten` is declared after `outputs`, so on an exception it is waited for before
+    // the transaction removes the staged file.)
+    OutputTransaction outputs;
+    std::future<void> labelMapWritten;
+    if (!outputLabelMap.empty())
+    {
+      labelMapWritten = std::async(std::launch::async, [&lumen, staged = outputs.Stage(outputLabelMap)]
+                                   { WriteLabelMap(*lumen.mask, staged); });
+    }
 
     CenterlineTree centerlines;
     if (wantCenterlines)
@@ -115,6 +194,11 @@ int main(int argc, char* argv[])
     StentMesh mesh;
     ActiveContourResult fit;
     Measurements measurements;
+    DeviceSelection selection;
+    int simulatedFamily = -1;
+    std::array<double, 3> graftDiameters{ 0.0, 0.0, 0.0 };
+    ActiveContourResult simulated;
+    FitCheck fitCheck;
     Eigen::VectorXd initialRadius, initialWallDistance;
     if (wantStent)
     {
@@ -149,13 +233,41 @@ int main(int argc, char* argv[])
         for (std::size_t i = site.warning.empty() ? 0 : 1; i < measurements.warnings.size(); ++i)
           std::cerr << "WARNING: " << measurements.warnings[i] << std::endl;
       }
+      if (wantDevice)
+      {
+        progress.Begin("SelectDevice", "Choosing the stent graft from the device catalogue");
+        selection = SelectDevice(SizingFromMeasurements(measurements), catalog, selectionParams);
+        simulatedFamily = FamilyToSimulate(selection);
+        if (simulatedFamily >= 0)
+        {
+          progress.Begin("SimulateGraft", "Simulating the chosen stent graft in the vessel");
+          const FamilyEvaluation& family = selection.families[simulatedFamily];
+          graftDiameters = { family.mainBody.diameterMm, family.rightLimb.diameterMm, family.leftLimb.diameterMm };
+          const ActiveContourParams graftParams = MakeActiveContourParams(
+            "simulate", measureStiffnessWeights, measureBalloonRadiusMm, measureBalloonPressure,
+            { graftDiameters[0], graftDiameters[1], graftDiameters[2] }, stentStiffnessWeights, stentBalloonPressure,
+            acmTau, wallWeight, wallSofteningMm, acmMaxIterations, acmToleranceMm);
+          simulated = FitActiveContour(mesh, wall, graftParams, progress.Callback());
+          fitCheck =
+            CheckGraftFit(mesh, simulated.V, simulated.wallDistanceMm, measurements, centerlines, graftDiameters);
+          if (selection.recommended < 0)
+            std::cerr << "WARNING: No device is within its instructions for use; the graft simulated is the nearest, "
+                      << family.family << " (outside its IFU)." << std::endl;
+        }
+        else if (!outputSimulatedStentModel.empty())
+        {
+          throw AlgorithmError("No catalogue device has a main body and both limbs within the oversizing ranges (" +
+                               selection.summary +
+                               "), so there is no graft to simulate for outputSimulatedStentModel; "
+                               "widen proximalOversizingRange or limbOversizingRange, or force one with --device.");
+        }
+      }
     }
 
     progress.Begin("WriteOutputs", "Writing the outputs");
-    OutputTransaction outputs;
-    if (!outputLabelMap.empty())
+    if (labelMapWritten.valid())
     {
-      WriteLabelMap(*lumen.mask, outputs.Stage(outputLabelMap));
+      labelMapWritten.get(); // rethrows a write error
     }
     if (!outputCenterlines.empty())
     {
@@ -173,9 +285,35 @@ int main(int argc, char* argv[])
     {
       WriteStentModel(mesh, fit.V, fit.radiusMm, fit.wallDistanceMm, outputs.Stage(outputStentModel));
     }
+    // The table and the return values: the measurements, then the device's sizes and the fit check.
+    std::vector<Measurement> rows = measurements.values;
+    if (simulatedFamily >= 0)
+    {
+      const FamilyEvaluation& family = selection.families[simulatedFamily];
+      const std::string name = family.family + (selection.recommended == simulatedFamily ? "" : " (outside IFU)");
+      rows.push_back({ "mainBodyDiameter", family.mainBody.diameterMm, "mm",
+                       name + " main body, " + FormatNumber(family.mainBody.oversizingPercent) + " % over (a)", "aorta",
+                       measurements.site.abscissaMm });
+      rows.push_back({ "rightLimbDiameter", family.rightLimb.diameterMm, "mm",
+                       name + " right limb, " + FormatNumber(family.rightLimb.oversizingPercent) + " % over (e)",
+                       "rightIliac", mesh.ringAbscissaMm[RightLegSegment].back() });
+      rows.push_back({ "leftLimbDiameter", family.leftLimb.diameterMm, "mm",
+                       name + " left limb, " + FormatNumber(family.leftLimb.oversizingPercent) + " % over (f)",
+                       "leftIliac", mesh.ringAbscissaMm[LeftLegSegment].back() });
+      for (const Measurement& m : FitCheckRows(fitCheck, mesh))
+        rows.push_back(m);
+    }
     if (!outputMeasurements.empty())
     {
-      WriteMeasurementsTable(measurements, outputs.Stage(outputMeasurements));
+      WriteMeasurementsTable(rows, outputs.Stage(outputMeasurements));
+    }
+    if (!outputSimulatedStentModel.empty())
+    {
+      WriteStentModel(mesh, simulated.V, simulated.radiusMm, simulated.wallDistanceMm,
+                      { { "Oversizing", fitCheck.oversizingPercent },
+                        { "Apposition", fitCheck.appositionMm },
+                        { "Sealing", fitCheck.sealing.cast<double>() } },
+                      outputs.Stage(outputSimulatedStentModel));
     }
     if (!outputDiameterProfile.empty())
     {
@@ -185,6 +323,15 @@ int main(int argc, char* argv[])
     {
       nlohmann::json report = MeasurementsToJson(measurements);
       report["format"] = "StentGraftPlanner.report/1";
+      report["notes"] = { "Diameters are lumen diameters (wall to wall of the contrast-filled lumen); instructions for "
+                          "use give outer-wall diameters, so sizes are under-called where there is thrombus or a thick "
+                          "wall.",
+                          "Device figures come from the catalogue " + catalogPath +
+                            ": public defaults, verify them against the current instructions for use." };
+      report["device"] = DeviceSelectionToJson(selection);
+      report["device"]["simulated"] =
+        simulatedFamily >= 0 ? nlohmann::json(selection.families[simulatedFamily].family) : nlohmann::json(nullptr);
+      report["fitCheck"] = simulatedFamily >= 0 ? FitCheckToJson(fitCheck) : nlohmann::json(nullptr);
       report["run"] = { { "inputVolume", inputVolume },
                         { "lumenVolumeMl", lumenVolumeMl },
                         { "acmIterations", acmIterations },
@@ -203,6 +350,19 @@ int main(int argc, char* argv[])
         for (const Measurement& m : measurements.values)
           values.emplace_back(m.name, ReturnMeasurement(measurements, m.name));
         values.emplace_back("proximalSiteSource", ToString(measurements.site.source));
+      }
+      if (wantDevice)
+      {
+        for (std::size_t i = measurements.values.size(); i < rows.size(); ++i)
+          values.emplace_back(rows[i].name, OrMinusOne(rows[i].value));
+        const bool simulatedAny = simulatedFamily >= 0;
+        values.emplace_back("recommendedDevice",
+                            selection.recommended >= 0 ? selection.families[selection.recommended].family : "none");
+        values.emplace_back("withinIfu",
+                            selection.recommended >= 0 && selection.recommendedWithinIfu ? "true" : "false");
+        values.emplace_back("coveredOstia", simulatedAny ? fitCheck.CoveredOstia() : "none");
+        values.emplace_back("migrationRisk", simulatedAny && fitCheck.migrationRisk ? "true" : "false");
+        values.emplace_back("fitCheckPassed", simulatedAny && fitCheck.Passed() ? "true" : "false");
       }
       WriteReturnParameters(values, outputs.Stage(returnParameterFile));
     }
@@ -226,6 +386,22 @@ int main(int argc, char* argv[])
       std::cout << "Stent surface: " << mesh.V.rows() << " vertices, " << acmMode << " mode, "
                 << (fit.converged ? "converged" : "not converged") << " after " << fit.iterations << " iterations"
                 << std::endl;
+    }
+    if (wantDevice)
+    {
+      std::cout << "Device: " << selection.summary << std::endl;
+      for (const std::string& reason : selection.reasons)
+        std::cout << "  " << reason << std::endl;
+      if (simulatedFamily >= 0)
+      {
+        std::cout << "Simulated graft (" << selection.families[simulatedFamily].family << "): proximal seal "
+                  << FormatNumber(fitCheck.proximalSealLengthMm) << " mm, iliac seal right "
+                  << FormatNumber(fitCheck.rightIliacSealLengthMm) << " mm / left "
+                  << FormatNumber(fitCheck.leftIliacSealLengthMm) << " mm, covered ostia: " << fitCheck.CoveredOstia()
+                  << "; fit check " << (fitCheck.Passed() ? "passed" : "FAILED") << std::endl;
+        for (const std::string& finding : fitCheck.findings)
+          std::cout << "  " << finding << std::endl;
+      }
     }
     if (wantMeasurements)
     {

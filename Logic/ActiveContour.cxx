@@ -111,6 +111,9 @@ ActiveContourParams ActiveContourParams::Simulate(const std::array<double, 3>& s
   // The balloon dominates the rings' own stiffness (≈ 0.1 r here) so that they open to within
   // 2 % of R; τ·p = 0.75 keeps the explicit step stable.
   p.balloonPressure = 5.0;
+  // A self-expanding graft keeps its radial force on the wall: with the pressure dropped after
+  // contact, the stiff rings would pull back ~0.4 mm inside an oversized graft's neck.
+  p.contactPressureFactor = 1.0;
   return p;
 }
 

@@ -44,7 +44,9 @@
 /// stent against the wall, and now only holds it there against the internal forces. With the
 /// full pressure, balloon and wall would balance δ·F_balloon/w_wall outside the wall, and at the
 /// flow divider, where the wall is a thin ridge between the two iliac lumens, the balloon would
-/// push medial leg vertices across it into the other lumen and back.
+/// push medial leg vertices across it into the other lumen and back. Simulate mode keeps the full
+/// pressure (factor 1): a self-expanding graft's radial force does not relax at the wall, and an
+/// oversized graft presses up to δ·p(R − r)/w_wall into it.
 ///
 /// Two modes, one engine (ActiveContourParams::Measure / ::Simulate): *measure* — w1…w5 small,
 /// R large, so the surface expands until it lies on the vessel wall; *simulate* — R per segment

@@ -39,6 +39,34 @@ Point3 NearestToLines(const std::vector<std::pair<Point3, Eigen::Vector3d>>& lin
   return A.ldlt().solve(b);
 }
 
+/// The chord of `c` from arc length `from` to `to` (clamped to the centerline) as a line.
+std::pair<Point3, Eigen::Vector3d> Chord(const Centerline& c, double from, double to)
+{
+  const Point3 a = PositionAt(c, from), b = PositionAt(c, to);
+  return { b, (b - a).normalized() };
+}
+
+/// Where the internal iliac leaves the iliac, as an abscissa along the iliac: like the aortic
+/// bifurcation, the point nearest the axes of the common iliac above the skeleton's junction
+/// (chord 25…5 mm before it), the external iliac below it (5…25 mm after) and the internal iliac
+/// (its centerline 5…20 mm from the junction), projected onto the iliac's centerline — the
+/// junction itself lies distal to it, inside the merged cross-section. Falls back to the junction
+/// when a chord is too short or the axes meet farther than 10 mm from it.
+double InternalIliacOrigin(const Centerline& iliac, const Centerline* internal, double junction)
+{
+  if (!internal || internal->LengthMm() < 20.0 || junction < 10.0 || iliac.LengthMm() - junction < 10.0)
+    return junction;
+  const std::vector<std::pair<Point3, Eigen::Vector3d>> axes = {
+    Chord(iliac, std::max(0.0, junction - 25.0), junction - 5.0),
+    Chord(iliac, junction + 5.0, std::min(iliac.LengthMm(), junction + 25.0)), Chord(*internal, 5.0, 20.0)
+  };
+  const Point3 origin = NearestToLines(axes);
+  const Point3 atJunction = PositionAt(iliac, junction);
+  if (!origin.allFinite() || (origin - atJunction).norm() > bifurcationSnapMm)
+    return junction;
+  return ProjectOntoCenterline(iliac, origin);
+}
+
 Measurement Diameter(const std::string& name,
                      const RingDiameters& ring,
                      const std::string& vessel,
@@ -98,7 +126,9 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
   for (int side = 0; side < 2; ++side)
   {
     if (const Landmark* origin = tree.FindLandmark(std::string(Side(side)) + "IliacBifurcation"))
-      internalIliacAbscissa[side] = ProjectOntoCenterline(*iliac[side], origin->lps);
+      internalIliacAbscissa[side] =
+        InternalIliacOrigin(*iliac[side], tree.FindVessel(std::string(Side(side)) + "InternalIliac"),
+                            ProjectOntoCenterline(*iliac[side], origin->lps));
     const double end = std::isfinite(internalIliacAbscissa[side]) ? std::min(30.0, internalIliacAbscissa[side] - 5.0)
                                                                   : std::min(30.0, iliac[side]->LengthMm());
     const Point3 q1 = PositionAt(*iliac[side], std::min(10.0, 0.5 * end)), q2 = PositionAt(*iliac[side], end);

@@ -23,7 +23,8 @@
 ///    rings), the usual clinical rule — judged on each ring's smallest diameter, the minor axis
 ///    clinicians use in angulated necks, because a ring that cuts a bend obliquely has a larger
 ///    mean before the aorta widens; `proximalSiteToBifurcationLength`: site to
-///    B; `rightIliacLength`/`leftIliacLength`: B to the internal iliac origin along the iliac;
+///    B; `rightIliacLength`/`leftIliacLength`: B to the internal iliac origin along the iliac (the
+///    origin found like B: where the common, external and internal iliac axes meet);
 ///  - `neckAngleBeta`: between the neck axis (chord over the first min(15 mm, neck length, ≥ 5 mm)
 ///    below the site) and the aneurysm axis (chord from the neck's end to B); `neckAngleAlpha`:
 ///    between the suprarenal axis (chord over up to 30 mm above the site, at least 10 mm) and the

@@ -25,15 +25,16 @@ constexpr double renalFitEndMm = 16.0;
 /// Renal arteries leave the aorta at 30–90°; a smaller fitted angle is noise, clamped here.
 constexpr double minimumRenalSinAngle = 0.5;
 
-/// The lower edge of one renal's ostium as an abscissa along the aorta, or NaN when the renal
-/// centerline does not reach outside the aortic wall.
-double RenalLowerEdge(const Centerline& aorta, const Centerline& renal, double& radiusMm)
+} // namespace
+
+BranchOstium FindBranchOstium(const Centerline& parent, const Centerline& branch)
 {
-  const Point3 junction = renal.points.row(0).transpose();
-  const double sJunction = ProjectOntoCenterline(aorta, junction);
-  const Point3 a = PositionAt(aorta, sJunction);
-  const Eigen::Vector3d T = TangentAt(aorta, sJunction);
-  const double aorticRadius = RadiusAt(aorta, sJunction);
+  BranchOstium ostium;
+  const Point3 junction = branch.points.row(0).transpose();
+  const double sJunction = ProjectOntoCenterline(parent, junction);
+  const Point3 a = PositionAt(parent, sJunction);
+  const Eigen::Vector3d T = TangentAt(parent, sJunction);
+  const double parentRadius = RadiusAt(parent, sJunction);
   const auto radial = [&](const Point3& p)
   {
     const Eigen::Vector3d w = p - a;
@@ -41,21 +42,21 @@ double RenalLowerEdge(const Centerline& aorta, const Centerline& renal, double& 
   };
   std::vector<Point3> fit;
   std::vector<double> radii;
-  for (Eigen::Index i = 0; i < renal.Size(); ++i)
+  for (Eigen::Index i = 0; i < branch.Size(); ++i)
   {
-    const Point3 p = renal.points.row(i).transpose();
-    const double outside = radial(p) - aorticRadius;
+    const Point3 p = branch.points.row(i).transpose();
+    const double outside = radial(p) - parentRadius;
     if (outside >= renalFitStartMm && outside <= renalFitEndMm)
     {
       fit.push_back(p);
-      radii.push_back(renal.radiusMm[i]);
+      radii.push_back(branch.radiusMm[i]);
     }
     if (outside > renalFitEndMm)
       break;
   }
   if (fit.size() < 3)
-    return std::nan("");
-  radiusMm = Median(radii);
+    return ostium;
+  const double radiusMm = Median(radii);
   const Eigen::Vector3d d = (fit.back() - fit.front()).normalized();
   Point3 centroid = Point3::Zero();
   for (const Point3& p : fit)
@@ -66,17 +67,20 @@ double RenalLowerEdge(const Centerline& aorta, const Centerline& renal, double& 
   const Eigen::Vector3d w = centroid - a;
   const Eigen::Vector3d wPerp = w - w.dot(T) * T, dPerp = d - d.dot(T) * T;
   const double qa = dPerp.squaredNorm(), qb = 2 * wPerp.dot(dPerp),
-               qc = wPerp.squaredNorm() - aorticRadius * aorticRadius;
+               qc = wPerp.squaredNorm() - parentRadius * parentRadius;
   const double discriminant = qb * qb - 4 * qa * qc;
   double t = 0.0;
   if (qa > 1e-12 && discriminant >= 0.0)
     t = (-qb + std::sqrt(discriminant)) / (2 * qa); // the near wall (both roots lie inward, t < 0)
   const Point3 ostiumCentre = centroid + t * d;
   const double sinAngle = std::max(d.cross(T).norm(), minimumRenalSinAngle);
-  return sJunction + (ostiumCentre - a).dot(T) + radiusMm / sinAngle;
+  ostium.found = true;
+  ostium.radiusMm = radiusMm;
+  ostium.centreAbscissaMm = sJunction + (ostiumCentre - a).dot(T);
+  ostium.upperAbscissaMm = ostium.centreAbscissaMm - radiusMm / sinAngle;
+  ostium.lowerAbscissaMm = ostium.centreAbscissaMm + radiusMm / sinAngle;
+  return ostium;
 }
-
-} // namespace
 
 const char* ToString(ProximalSiteSource source)
 {
@@ -106,7 +110,9 @@ ProximalSite FindProximalSite(const CenterlineTree& tree, const std::optional<Po
     if (distance > maximumLandmarkDistanceMm)
     {
       throw InputError(
-        "lowestRenalOstium " + FormatPoint(*lowestRenalOstiumLps) + " mm LPS lies " + FormatNumber(distance) +
+        "lowestRenalOstium " +
+        FormatPoint(Point3(-lowestRenalOstiumLps->x(), -lowestRenalOstiumLps->y(), lowestRenalOstiumLps->z())) +
+        " mm RAS lies " + FormatNumber(distance) +
         " mm from the aortic centerline; expected a point on the aortic wall "
         "(within " +
         FormatNumber(maximumLandmarkDistanceMm, 0) + " mm) at the lower edge of the lowest renal artery's ostium.");
@@ -121,13 +127,12 @@ ProximalSite FindProximalSite(const CenterlineTree& tree, const std::optional<Po
       const Centerline* renal = tree.FindVessel(name);
       if (!renal || renal->Size() < 2)
         continue;
-      double radius = 0.0;
-      const double edge = RenalLowerEdge(aorta, *renal, radius);
-      if (std::isfinite(edge) && edge > lowest)
+      const BranchOstium ostium = FindBranchOstium(aorta, *renal);
+      if (ostium.found && ostium.lowerAbscissaMm > lowest)
       {
-        lowest = edge;
+        lowest = ostium.lowerAbscissaMm;
         site.renal = name;
-        site.renalRadiusMm = radius;
+        site.renalRadiusMm = ostium.radiusMm;
       }
     }
     if (lowest >= 0.0)

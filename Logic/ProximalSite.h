@@ -49,6 +49,23 @@ struct ProximalSite
   std::string warning;         ///< non-empty for source Top (what was used and why)
 };
 
+/// Where a side branch opens from its parent vessel, as arc lengths along the parent's
+/// centerline: the branch's axis (chord of its centerline 1…16 mm outside the parent's wall)
+/// crosses the parent's wall at `centreAbscissaMm`; the ostium reaches ρ / sin φ up and down from
+/// there (the file comment). `found` is false when the branch's centerline does not reach 1 mm
+/// beyond the parent's wall.
+struct BranchOstium
+{
+  bool found = false;
+  double centreAbscissaMm = 0.0;
+  double upperAbscissaMm = 0.0; ///< the ostium's upstream edge (smaller abscissa)
+  double lowerAbscissaMm = 0.0; ///< its downstream edge
+  double radiusMm = 0.0;        ///< the branch's median inscribed radius there
+};
+
+/// See BranchOstium. `parent` and `branch` as labelled (the branch starts at the junction).
+BranchOstium FindBranchOstium(const Centerline& parent, const Centerline& branch);
+
 /// See the file comment. `lowestRenalOstiumLps`, when given, wins over detection.
 ProximalSite FindProximalSite(const CenterlineTree& tree, const std::optional<Point3>& lowestRenalOstiumLps = {});
 

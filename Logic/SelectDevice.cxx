@@ -387,4 +387,22 @@ DeviceSelection SelectDevice(const SizingAnatomy& anatomy,
   return s;
 }
 
+SizingAnatomy SizingFromMeasurements(const Measurements& m)
+{
+  SizingAnatomy a;
+  a.proximalNeckDiameterMm = m.Value("proximalNeckDiameter");
+  a.neckDiameter15mmMm = m.Value("neckDiameter15mm");
+  a.proximalNeckLengthMm = m.Value("proximalNeckLength");
+  a.neckAngleBetaDeg = m.Value("neckAngleBeta");
+  a.neckAngleAlphaDeg = m.Value("neckAngleAlpha");
+  a.rightIliacDiameterMm = m.Value("rightIliacDiameter");
+  a.leftIliacDiameterMm = m.Value("leftIliacDiameter");
+  a.rightIliacSealLengthMm = m.Value("rightIliacLength");
+  a.leftIliacSealLengthMm = m.Value("leftIliacLength");
+  a.rightAccessMinDiameterMm = m.Value("rightAccessMinDiameter");
+  a.leftAccessMinDiameterMm = m.Value("leftAccessMinDiameter");
+  a.proximalSiteToBifurcationLengthMm = m.Value("proximalSiteToBifurcationLength");
+  return a;
+}
+
 } // namespace sgp

@@ -46,6 +46,7 @@
 
 #include "CriterionCheck.h"
 #include "DeviceCatalog.h"
+#include "MeasureAnatomy.h"
 
 namespace sgp
 {
@@ -120,6 +121,12 @@ struct DeviceSelection
   /// recommendation outside IFU or not fully checked: its failing and indeterminate checks.
   std::vector<std::string> reasons;
 };
+
+/// The sizing inputs from the measurement stage (MeasureAnatomy.h; lumen diameters): (a), (b),
+/// neck length, β, α, (e), (f), access minimum diameters, site to bifurcation; each iliac's seal
+/// length is its common iliac length, bifurcation to internal iliac origin — the most a limb can
+/// seal in. A value the stage could not measure stays NaN.
+SizingAnatomy SizingFromMeasurements(const Measurements& measurements);
 
 /// (deviceDiameterMm / vesselDiameterMm − 1) × 100.
 double OversizingPercent(double deviceDiameterMm, double vesselDiameterMm);

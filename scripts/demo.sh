@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, generates a synthetic aneurysm phantom (with a vertebra and
-# enhancing kidneys), runs the planning CLI on it the way Slicer would (lumen, centerlines,
-# landmarks), and prints the results next to the phantom's known truth.
+# enhancing kidneys), runs the whole planning job on it the way Slicer would (lumen, centerlines,
+# stent fit, measurements, device selection, simulated graft), and prints the results next to
+# the phantom's known truth, ending with the recommendation and the fit check.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
@@ -21,42 +22,73 @@ seed=$(sed -n 's/^seedRas = //p' "$demo/phantom.params")
 echo "== Running StentGraftSimulation (seed $seed, RAS)"
 "$cli/StentGraftSimulation" "$demo/phantom.nrrd" --seed "$seed" \
   --outputLabelMap "$demo/lumen.nrrd" --outputCenterlines "$demo/centerlines.vtp" \
-  --outputLandmarks "$demo/landmarks.mrk.json" --returnparameterfile "$demo/results.params" >"$demo/run.log"
+  --outputLandmarks "$demo/landmarks.mrk.json" --outputStentModel "$demo/stent.vtp" \
+  --outputSimulatedStentModel "$demo/graft.vtp" --outputMeasurements "$demo/measurements.csv" \
+  --outputDiameterProfile "$demo/profile.csv" --outputReport "$demo/report.json" \
+  --returnparameterfile "$demo/results.params" >"$demo/run.log"
 
 "$SGP_PYTHON" - "$demo" <<'PY'
 import json, os, re, sys
 demo = sys.argv[1]
 truth = json.load(open(os.path.join(demo, "truth.json")))
 returns = dict(line.split(" = ", 1) for line in open(os.path.join(demo, "results.params")).read().splitlines())
+report = json.load(open(os.path.join(demo, "report.json")))
 log = open(os.path.join(demo, "run.log")).read()
 stages = re.findall(r"<filter-end>\s*<filter-name>([^<]*)</filter-name>\s*<filter-time>([^<]*)</filter-time>", log)
 measured = float(returns["lumenVolumeMl"])
 expected = truth["lumenVolumeMl"]
 print()
-print("StentGraftPlanner demo: lumen and centerlines of a synthetic abdominal aortic aneurysm")
-print("  stage times:        " + ", ".join("%s %.2f s" % (n, float(t)) for n, t in stages))
-print("  HU window used:     %.0f to %.0f HU (estimated at the seed); boundary at %.0f HU"
-      % (float(returns["lowerHuUsed"]), float(returns["upperHuUsed"]), float(returns["edgeHuUsed"])))
-print("  lumen volume:       %.1f mL   (phantom truth %.1f mL, error %+.1f %%)"
-      % (measured, expected, 100.0 * (measured - expected) / expected))
+print("StentGraftPlanner demo: planning EVAR on a synthetic abdominal aortic aneurysm")
+print("  stage times:    " + ", ".join("%s %.2f s" % (n, float(t)) for n, t in stages))
+print("  lumen volume:   %.1f mL (phantom truth %.1f mL, error %+.1f %%); HU window %.0f to %.0f"
+      % (measured, expected, 100.0 * (measured - expected) / expected, float(returns["lowerHuUsed"]),
+         float(returns["upperHuUsed"])))
 summary = [l for l in log.splitlines() if l.startswith("Centerlines:")]
 print("  " + (summary[0] if summary else "Centerlines: (none)"))
-markups = json.load(open(os.path.join(demo, "landmarks.mrk.json")))["markups"][0]["controlPoints"]
-print("  landmarks (LPS mm)   found                     phantom truth")
-for point in markups:
-    name = point["label"]
-    true = truth["landmarks"].get(name)
-    print("    %-24s (%6.1f, %6.1f, %6.1f)   %s" % ((name,) + tuple(point["position"]) + (
-        "(%6.1f, %6.1f, %6.1f)" % tuple(true) if true else "",)))
-print("  phantom sizing truth (mm): " + ", ".join("%s %.1f" % (k, v) for k, v in truth["sizing"].items()
-                                                    if k.endswith("Diameter") or k.endswith("15mm")))
+site = report["proximalSite"]
+print("  proximal implantation site: from the %s (%s), %.1f mm down the aorta"
+      % (site["source"], site.get("renal") or "-", site["abscissaMm"]))
 print()
-print("Outputs in %s:" % demo)
+print("  measurement                         measured      truth    error")
+sizing = truth["sizing"]
+truth_of = dict(sizing, neckAngleBeta=sizing["neckAngleBetaDeg"])
+for m in report["measurements"]:
+    value = m["value"]
+    shown = "%8.1f %-5s" % (value, m["unit"]) if value is not None else "   not measured"
+    t = truth_of.get(m["name"])
+    print("  %-34s %s %s" % (m["name"], shown,
+                            "%7.1f  %+6.2f" % (t, value - t) if t is not None and value is not None else ""))
+device = report.get("device") or {}
+recommendation = device.get("recommendation") or {}
+print()
+print("Recommendation: " + (recommendation.get("summary") or "none"))
+for reason in recommendation.get("reasons") or []:
+    print("  - " + reason)
+for family in device.get("families") or []:
+    failing = [c["text"] for c in family["checks"] if c["status"] != "pass"]
+    print("  %-22s %s" % (family["name"], "within IFU" if family["withinIfu"] else "outside IFU: " + "; ".join(failing)))
+fit = report.get("fitCheck")
+if fit:
+    print("Fit check of the simulated %s graft: %s" % (device.get("simulated"), "passed" if fit["passed"] else "FAILED"))
+    print("  seal zones: proximal %.1f mm, right iliac %.1f mm, left iliac %.1f mm"
+          % (fit["proximalSealLengthMm"], fit["rightIliacSealLengthMm"], fit["leftIliacSealLengthMm"]))
+    print("  oversizing: proximal %.1f %%, right limb %.1f %%, left limb %.1f %%"
+          % (fit["proximalOversizingPercent"], fit["rightLimbOversizingPercent"], fit["leftLimbOversizingPercent"]))
+    print("  ostia covered: " + (", ".join(fit["coveredOstia"]) or "none")
+          + "; migration risk: " + ("yes" if fit["migrationRisk"] else "no"))
+    for finding in fit["findings"]:
+        print("  - " + finding)
+print()
+print("Outputs in %s (open them in 3D Slicer; models are LPS):" % demo)
 for name, what in (("phantom.nrrd", "CT volume (HU)"), ("truth.json", "analytic ground truth"),
-                   ("truth-labels.nrrd", "truth labels: 1 lumen, 2 bone, 3 kidney"),
                    ("lumen.nrrd", "segmented lumen label map"),
-                   ("centerlines.vtp", "centerlines (LPS; Name, Radius, Abscissa)"),
-                   ("landmarks.mrk.json", "landmarks (Slicer markups, LPS)"),
-                   ("results.params", "SEM return parameters")):
+                   ("centerlines.vtp", "centerlines (Name, Radius, Abscissa)"),
+                   ("landmarks.mrk.json", "landmarks (Slicer markups)"),
+                   ("stent.vtp", "stent surface fitted in measure mode"),
+                   ("graft.vtp", "simulated graft (Oversizing, Apposition, Sealing)"),
+                   ("measurements.csv", "measurements table"), ("profile.csv", "diameter profiles"),
+                   ("report.json", "the whole plan"), ("results.params", "SEM return parameters")):
     print("  %-18s %s" % (name, what))
+print()
+print("Device figures are public defaults (Resources/devices.json): verify them against the current IFU.")
 PY

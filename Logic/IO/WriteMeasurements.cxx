@@ -40,9 +40,14 @@ nlohmann::json JsonPoint(const Point3& p)
 
 std::string FormatMeasurementsTable(const Measurements& measurements)
 {
+  return FormatMeasurementsTable(measurements.values);
+}
+
+std::string FormatMeasurementsTable(const std::vector<Measurement>& rows)
+{
   std::ostringstream out;
   out << "name,value,unit,definition,vessel,abscissaMm,minDiameterMm,maxDiameterMm,areaDiameterMm\n";
-  for (const Measurement& m : measurements.values)
+  for (const Measurement& m : rows)
   {
     out << m.name << ',' << Number(m.value) << ',' << Quoted(m.unit) << ',' << Quoted(m.definition) << ',' << m.vessel
         << ',' << Number(m.abscissaMm) << ',' << Number(m.minMm) << ',' << Number(m.maxMm) << ',' << Number(m.areaMm)
@@ -62,9 +67,9 @@ std::string FormatDiameterProfiles(const Measurements& measurements)
   return out.str();
 }
 
-void WriteMeasurementsTable(const Measurements& measurements, const std::string& path)
+void WriteMeasurementsTable(const std::vector<Measurement>& rows, const std::string& path)
 {
-  WriteTextFile(FormatMeasurementsTable(measurements), path, "measurements table");
+  WriteTextFile(FormatMeasurementsTable(rows), path, "measurements table");
 }
 
 void WriteDiameterProfiles(const Measurements& measurements, const std::string& path)
@@ -108,6 +113,33 @@ nlohmann::json MeasurementsToJson(const Measurements& measurements)
   out["diameterProfiles"] = profiles;
   out["warnings"] = measurements.warnings;
   return out;
+}
+
+nlohmann::json FitCheckToJson(const FitCheck& check)
+{
+  nlohmann::json ostia = nlohmann::json::array(), covered = nlohmann::json::array();
+  for (const OstiumCoverage& o : check.ostia)
+  {
+    ostia.push_back({ { "branch", o.branch },
+                      { "parent", o.parent },
+                      { "upperAbscissaMm", o.upperAbscissaMm },
+                      { "lowerAbscissaMm", o.lowerAbscissaMm },
+                      { "overlapMm", o.overlapMm },
+                      { "covered", o.covered } });
+    if (o.covered)
+      covered.push_back(o.branch);
+  }
+  return { { "passed", check.Passed() },
+           { "migrationRisk", check.migrationRisk },
+           { "proximalSealLengthMm", check.proximalSealLengthMm },
+           { "rightIliacSealLengthMm", check.rightIliacSealLengthMm },
+           { "leftIliacSealLengthMm", check.leftIliacSealLengthMm },
+           { "proximalOversizingPercent", JsonNumber(check.proximalOversizingPercent) },
+           { "rightLimbOversizingPercent", JsonNumber(check.rightLimbOversizingPercent) },
+           { "leftLimbOversizingPercent", JsonNumber(check.leftLimbOversizingPercent) },
+           { "coveredOstia", covered },
+           { "ostia", ostia },
+           { "findings", check.findings } };
 }
 
 } // namespace sgp

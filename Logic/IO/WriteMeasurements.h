@@ -17,14 +17,16 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "FitCheck.h"
 #include "MeasureAnatomy.h"
 
 namespace sgp
 {
 
+std::string FormatMeasurementsTable(const std::vector<Measurement>& rows);
 std::string FormatMeasurementsTable(const Measurements& measurements);
 std::string FormatDiameterProfiles(const Measurements& measurements);
-void WriteMeasurementsTable(const Measurements& measurements, const std::string& path);
+void WriteMeasurementsTable(const std::vector<Measurement>& rows, const std::string& path);
 void WriteDiameterProfiles(const Measurements& measurements, const std::string& path);
 
 /// {"proximalSite": {"source", "abscissaMm", "lps", "renal"}, "aorticBifurcation": {"lps",
@@ -33,5 +35,11 @@ void WriteDiameterProfiles(const Measurements& measurements, const std::string& 
 /// "areaDiameterMm"}], "diameterProfiles": {vessel: [[abscissaMm, mean, min, max, area], …]},
 /// "warnings": […]}.
 nlohmann::json MeasurementsToJson(const Measurements& measurements);
+
+/// {"passed", "migrationRisk", "proximalSealLengthMm", "rightIliacSealLengthMm",
+/// "leftIliacSealLengthMm", "proximalOversizingPercent", "rightLimbOversizingPercent",
+/// "leftLimbOversizingPercent", "coveredOstia": [names], "ostia": [{"branch", "parent",
+/// "upperAbscissaMm", "lowerAbscissaMm", "overlapMm", "covered"}], "findings": [lines]}.
+nlohmann::json FitCheckToJson(const FitCheck& check);
 
 } // namespace sgp

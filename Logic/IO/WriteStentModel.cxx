@@ -19,6 +19,16 @@ void WriteStentModel(const StentMesh& mesh,
                      const Eigen::VectorXd& wallDistanceMm,
                      const std::string& path)
 {
+  WriteStentModel(mesh, V, radiusMm, wallDistanceMm, {}, path);
+}
+
+void WriteStentModel(const StentMesh& mesh,
+                     const Points& V,
+                     const Eigen::VectorXd& radiusMm,
+                     const Eigen::VectorXd& wallDistanceMm,
+                     const std::vector<std::pair<std::string, Eigen::VectorXd>>& extra,
+                     const std::string& path)
+{
   vtkNew<vtkPoints> points;
   vtkNew<vtkIntArray> segment, ring;
   vtkNew<vtkDoubleArray> radius, wall;
@@ -46,6 +56,14 @@ void WriteStentModel(const StentMesh& mesh,
   for (vtkDataArray* array : { static_cast<vtkDataArray*>(segment), static_cast<vtkDataArray*>(ring),
                                static_cast<vtkDataArray*>(radius), static_cast<vtkDataArray*>(wall) })
     polyData->GetPointData()->AddArray(array);
+  for (const auto& [name, values] : extra)
+  {
+    vtkNew<vtkDoubleArray> array;
+    array->SetName(name.c_str());
+    for (Eigen::Index i = 0; i < values.size(); ++i)
+      array->InsertNextValue(values[i]);
+    polyData->GetPointData()->AddArray(array);
+  }
   WriteModelLps(polyData, path);
 }
 

@@ -7,6 +7,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "../StentMesh.h"
 
@@ -17,6 +19,15 @@ void WriteStentModel(const StentMesh& mesh,
                      const Points& V,
                      const Eigen::VectorXd& radiusMm,
                      const Eigen::VectorXd& wallDistanceMm,
+                     const std::string& path);
+
+/// The same with further point-data arrays (name, #V values), e.g. the simulated graft's
+/// Oversizing (%), Apposition (mm) and Sealing (0/1).
+void WriteStentModel(const StentMesh& mesh,
+                     const Points& V,
+                     const Eigen::VectorXd& radiusMm,
+                     const Eigen::VectorXd& wallDistanceMm,
+                     const std::vector<std::pair<std::string, Eigen::VectorXd>>& extra,
                      const std::string& path);
 
 } // namespace sgp

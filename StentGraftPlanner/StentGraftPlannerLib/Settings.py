@@ -5,7 +5,7 @@ Each setting has a name, a kind, a default and the name of the widget in
 the CLI under the same name, so their names and defaults must equal the ``<name>`` and
 ``<default>`` of ``CLI/StentGraftSimulation.xml`` (the single source of truth; a CTest test
 compares the two). The others are combined into one CLI argument each (``device``,
-``proximalOversizing``, ``deviceCatalog``).
+``proximalOversizingRange``, ``deviceCatalog``).
 
 Settings are stored in the module's parameter node as strings (``settingsToStrings`` and
 ``settingsFromStrings``), so the panel state is saved with the scene; a scene from an older
@@ -65,7 +65,7 @@ SETTINGS = (
     _setting("wallSofteningMm", "float", 1.0, "wallSofteningMmSpinBox"),
     _setting("acmMaxIterations", "int", 3000, "acmMaxIterationsSpinBox"),
     _setting("acmToleranceMm", "float", 0.005, "acmToleranceMmSpinBox"),
-    # Device selection: combined into the CLI's device, proximalOversizing and deviceCatalog.
+    # Device selection: combined into the CLI's device, proximalOversizingRange and deviceCatalog.
     _setting("deviceFamily", "str", AUTO_DEVICE, "deviceFamilyComboBox", cli=False),
     _setting("deviceDiameterMm", "float", 0.0, "deviceDiameterSpinBox", cli=False),
     _setting("oversizingMinPercent", "float", 10.0, "oversizingMinSpinBox", cli=False),
@@ -260,7 +260,7 @@ def buildCliParameters(settings, nodes, pointCounts, reportPath):
             value = settings[setting.name]
             parameters[setting.name] = {"float": float, "int": int}.get(setting.kind, str)(value)
     parameters["device"] = deviceArgument(settings["deviceFamily"], settings["deviceDiameterMm"])
-    parameters["proximalOversizing"] = "%s,%s" % (
+    parameters["proximalOversizingRange"] = "%s,%s" % (
         formatNumber(settings["oversizingMinPercent"]),
         formatNumber(settings["oversizingMaxPercent"]),
     )

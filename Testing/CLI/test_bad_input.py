@@ -14,14 +14,18 @@ that the CLI
 The cases: missing input file, unreadable file, a 2-D image, a seed outside
 the image, a seed in soft tissue, an inverted manual HU window, no seed, a
 non-numeric seed, a stent mesh whose rings are not a multiple of 4, two
-stent diameters where three are needed, and a scan that stops above the
-aortic bifurcation with centerlines requested (no Y may be made up). A positive control through the same harness (valid input
+stent diameters where three are needed, a scan that stops above the
+aortic bifurcation with centerlines requested (no Y may be made up), a device
+catalogue with a missing field and with a wrongly typed one, an unknown
+--device, an inverted oversizing range, and a lowest-renal point far from the
+aorta. A positive control through the same harness (valid input
 exits 0 and leaves lumen.nrrd and ret.params) shows the harness can tell
 success from failure. Prints one line per check and `N passed, M failed`;
 exits 1 on any failure.
 """
 
 import argparse
+import json
 import os
 import random
 import shutil
@@ -231,6 +235,34 @@ def main():
              valid_seed + ["--outputCenterlines", "{outdir}/centerlines.vtp",
                            "--outputLandmarks", "{outdir}/landmarks.mrk.json"],
              ["No aortic bifurcation", "end points"])
+
+    # The device catalogue and selection (issue 6): checked before the image is processed, each
+    # error naming the file, the entry and the field, or the flag and its value.
+    catalogue = os.path.join(os.path.dirname(cli), "devices.json")  # installed beside the CLI
+    if check(os.path.isfile(catalogue), "the default device catalogue sits beside the CLI", catalogue):
+        with open(catalogue, encoding="utf-8") as handle:
+            entries = json.load(handle)
+        del entries["families"][1]["ifu"]["neckDiameterMm"]["max"]
+        broken = os.path.join(workdir, "broken-devices.json")
+        with open(broken, "w", encoding="utf-8") as handle:
+            json.dump(entries, handle)
+        measure = ["--outputMeasurements", "{outdir}/measurements.csv"]
+        family = entries["families"][1]["name"]
+        bad_case(cli, workdir, "catalogue-missing-field", volume, valid_seed + measure + ["--deviceCatalog", broken],
+                 [broken, family, "ifu.neckDiameterMm.max", "missing"])
+        entries["families"][1]["ifu"]["neckDiameterMm"]["max"] = "thirty-two"
+        with open(broken, "w", encoding="utf-8") as handle:
+            json.dump(entries, handle)
+        bad_case(cli, workdir, "catalogue-wrong-type", volume, valid_seed + measure + ["--deviceCatalog", broken],
+                 [broken, family, "ifu.neckDiameterMm.max", "thirty-two"])
+        bad_case(cli, workdir, "unknown-device", volume, valid_seed + measure + ["--device", "NoSuchGraft"],
+                 ["NoSuchGraft", catalogue])
+        bad_case(cli, workdir, "inverted-oversizing", volume,
+                 valid_seed + measure + ["--proximalOversizingRange", "20,10"], ["proximalOversizingRange", "20.0,10.0"])
+    # A lowest-renal point far from the aorta cannot be on its wall.
+    bad_case(cli, workdir, "renal-point-off-the-aorta", volume,
+             valid_seed + ["--outputMeasurements", "{outdir}/measurements.csv", "--lowestRenalOstium", "90,0,60"],
+             ["lowestRenalOstium", "(90.0, 0.0, 60.0) mm RAS", "from the aortic centerline"])
 
     passed = sum(results)
     failed = len(results) - passed

@@ -17,7 +17,8 @@ Checked in each: exit 0, the return-parameter file holds every measurement (the 
 of DESIGN.md and the angles), the diameters within 1.0 mm and lengths within 3 mm of the truth
 (issue 5's bars), β within 5 degrees; the measurements table (CSV) has the declared header and
 the same values as the return file; the diameter profile has rows for the aorta and both iliacs;
-the JSON report parses and agrees with the table.
+the JSON report parses and agrees with the table, and the Slicer panel's reader
+(StentGraftPlannerLib.Results) finds in it the device and fit check the CLI returned.
 Prints one line per check and `N passed, M failed`; exits 1 on any failure.
 """
 
@@ -29,6 +30,9 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from test_slicer_run import check, discover, finish, run_like_slicer  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "StentGraftPlanner"))
+from StentGraftPlannerLib import Results  # noqa: E402
 
 DIAMETERS = ["proximalNeckDiameter", "neckDiameter15mm", "maxAneurysmDiameter", "distalNeckMinDiameter",
              "rightIliacDiameter", "leftIliacDiameter"]
@@ -128,6 +132,22 @@ def check_run(label, returned, files, truth, expect_source, shift_mm):
                 and abs(reported[name] - values[name]) <= 1e-6 * max(1, abs(values[name]))
                 for name in values)
     check(agree, f"{label}: report values equal the returned values")
+
+    # The Slicer panel's own reader (plain Python, StentGraftPlanner/StentGraftPlannerLib) on this
+    # real report: the recommendation it shows is the one the CLI returned.
+    with open(files["outputReport"], encoding="utf-8") as handle:
+        parsed = Results.parseReport(handle.read())
+    recommendation = parsed["recommendation"] or {}
+    returned_device = returned.get("recommendedDevice")
+    if returned_device == "none":
+        check(recommendation.get("status") == "noDeviceWithinIfu", f"{label}: panel reads 'no device within IFU'")
+    else:
+        check(recommendation.get("family") == returned_device and recommendation.get("status") == "recommended",
+              f"{label}: panel reads the recommended device {returned_device}", str(recommendation)[:300])
+        check(recommendation.get("mainBodyDiameterMm") == float(returned.get("mainBodyDiameter", "nan")),
+              f"{label}: panel reads the main body diameter", str(recommendation.get("mainBodyDiameterMm")))
+    check(parsed["fitCheck"] is not None and parsed["fitCheck"].get("passed") == (returned.get("fitCheckPassed") == "true"),
+          f"{label}: panel reads the fit check", str(parsed["fitCheck"])[:200])
 
 
 def main():

@@ -35,9 +35,22 @@ struct MeasuredPlan
   CenterlineTree tree;
   ProximalSite site;
   StentMesh mesh;
+  WallDistanceField wall;
   ActiveContourResult fit;
   Measurements measurements;
 };
+
+/// Builds the stent mesh with `meshParams` (its proximal start defaulting to the plan's site),
+/// the wall field around it, the measure-mode fit and the measurements, as the CLI does.
+inline void FitAndMeasure(MeasuredPlan& plan, StentMeshParams meshParams = {})
+{
+  if (meshParams.proximalAbscissaMm < 0.0)
+    meshParams.proximalAbscissaMm = plan.site.abscissaMm;
+  plan.mesh = BuildStentMesh(plan.tree, meshParams);
+  plan.wall = WallDistanceField::FromLumen(*plan.lumen, 5.0, StentReach(plan.mesh, plan.tree));
+  plan.fit = FitActiveContour(plan.mesh, plan.wall, ActiveContourParams::Measure());
+  plan.measurements = MeasureAnatomy(plan.tree, plan.mesh, plan.fit.V, plan.site);
+}
 
 /// Segmentation, centerlines, proximal site, stent mesh from the site, measure-mode fit and
 /// measurements, with the CLI's default parameters.
@@ -49,11 +62,7 @@ inline MeasuredPlan MeasureFromCt(const CtImage& ct,
   plan.lumen = GrowLumenRegion(ct, seedLps, RegionGrowingParams{}).mask;
   plan.tree = CenterlinesFromMask(*plan.lumen);
   plan.site = FindProximalSite(plan.tree, lowestRenalOstiumLps);
-  StentMeshParams meshParams;
-  meshParams.proximalAbscissaMm = plan.site.abscissaMm;
-  plan.mesh = BuildStentMesh(plan.tree, meshParams);
-  plan.fit = FitActiveContour(plan.mesh, WallDistanceField::FromLumen(*plan.lumen), ActiveContourParams::Measure());
-  plan.measurements = MeasureAnatomy(plan.tree, plan.mesh, plan.fit.V, plan.site);
+  FitAndMeasure(plan);
   return plan;
 }
 

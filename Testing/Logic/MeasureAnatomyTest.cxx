@@ -174,6 +174,7 @@ TEST_F(NoisyPhantomMeasurements, OstiumPointFarFromTheAorta_InputErrorNamesIt)
   {
     EXPECT_NE(std::string(e.what()).find("lowestRenalOstium"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("60.0 mm from the aortic centerline"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("mm RAS"), std::string::npos) << e.what(); // as the user gave it
   }
 }
 
@@ -195,9 +196,11 @@ TEST(MeasureAnatomy, UnequalIliacsOnFlippedAxes_RightAndLeftNeverSwapped)
   p.directionLps = Eigen::Vector3d(-1.0, 1.0, -1.0).asDiagonal(); // i and k stored reversed
   const AorticPhantom phantom = GenerateAorticPhantom(p);
   const MeasuredPlan plan = MeasureFromCt(*phantom.ct, phantom.truth.seedLps);
-  // 4 mm apart, so a swap would miss by 4 mm; each within the 1 mm bar.
+  // 4 mm apart, so a swap would miss by 4 mm; each within the 1 mm bar (and every other value
+  // within its bar too).
   EXPECT_NEAR(plan.measurements.Value("rightIliacDiameter"), 10.0, fineDiameterMm);
   EXPECT_NEAR(plan.measurements.Value("leftIliacDiameter"), 14.0, fineDiameterMm);
+  ExpectSizing(plan.measurements, phantom.truth.sizing, fineDiameterMm);
 }
 
 class NeckAngleMeasurement : public ::testing::TestWithParam<double>

@@ -75,9 +75,9 @@ def sentParameterProblems(Settings, declared):
             channel = "output" if name == "outputReport" else "input"
             if tag != "file" or parameter["channel"] != channel:
                 problems.append("%s must be a <file> with channel %s (a path passed unchanged)" % (name, channel))
-        elif name == "proximalOversizing":
+        elif name == "proximalOversizingRange":
             if tag not in ("float-vector", "double-vector"):
-                problems.append("proximalOversizing is a <%s>, expected a float-vector (\"10,20\")" % tag)
+                problems.append("proximalOversizingRange is a <%s>, expected a float-vector (\"10,20\")" % tag)
         elif name == "device":
             if tag != "string":
                 problems.append("device is a <%s>, expected a <string> (\"auto\", \"Family\", \"Family:diameter\")" % tag)

@@ -138,7 +138,7 @@ class BuildCliParametersTest(unittest.TestCase):
             else:
                 self.assertNotIn(s.name, parameters)
         self.assertEqual(parameters["device"], "auto")
-        self.assertEqual(parameters["proximalOversizing"], "10,20")  # pre-joined: no ", " from slicer.cli
+        self.assertEqual(parameters["proximalOversizingRange"], "10,20")  # pre-joined: no ", " from slicer.cli
         self.assertEqual(parameters["outputReport"], "/tmp/report.json")
         self.assertNotIn("deviceCatalog", parameters)  # the CLI's default: the bundled catalogue
 
@@ -153,7 +153,7 @@ class BuildCliParametersTest(unittest.TestCase):
                         oversizingMinPercent=12.5, oversizingMaxPercent=25.0, deviceCatalogPath="/data/devices.json")
         parameters = self.build(settings)
         self.assertEqual(parameters["device"], "Excluder:28.5")
-        self.assertEqual(parameters["proximalOversizing"], "12.5,25")
+        self.assertEqual(parameters["proximalOversizingRange"], "12.5,25")
         self.assertEqual(parameters["deviceCatalog"], "/data/devices.json")
 
     def test_RenalLandmarkWithoutPoints_IsLeftOut(self):

@@ -1,0 +1,211 @@
+// Device selection on measured phantoms and the simulated graft's fit check (issue 6), through
+// the pipeline the CLI runs: segmentation → centerlines → measure-mode fit → measurements →
+// selection → simulate-mode fit with the device's nominal radii → fit check.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "Errors.h"
+#include "FitCheck.h"
+#include "IO/ReadDeviceCatalog.h"
+#include "Phantom/AorticPhantom.h"
+#include "PipelineSupport.h"
+#include "SelectDevice.h"
+
+namespace sgp
+{
+namespace
+{
+
+using testing::MeasuredPlan;
+
+const CriterionCheck& Check(const FamilyEvaluation& family, const std::string& name)
+{
+  for (const CriterionCheck& c : family.checks)
+    if (c.name == name)
+      return c;
+  throw std::runtime_error("no check " + name + " for " + family.family);
+}
+
+/// The simulate-mode fit of `plan`'s mesh with nominal diameters (trunk, right, left) and its check.
+FitCheck Simulate(const MeasuredPlan& plan, const std::array<double, 3>& diameters)
+{
+  const ActiveContourResult graft = FitActiveContour(plan.mesh, plan.wall, ActiveContourParams::Simulate(diameters));
+  EXPECT_TRUE(graft.converged);
+  return CheckGraftFit(plan.mesh, graft.V, graft.wallDistanceMm, plan.measurements, plan.tree, diameters);
+}
+
+/// Mean of a per-vertex value over the trunk's first `rings` rings (the proximal neck).
+double NeckMean(const StentMesh& mesh, const Eigen::VectorXd& values, int rings)
+{
+  double sum = 0.0;
+  for (int k = 0; k < rings; ++k)
+    for (int j = 0; j < mesh.verticesPerRing; ++j)
+      sum += values[mesh.Id(TrunkSegment, k, j)];
+  return sum / (rings * mesh.verticesPerRing);
+}
+
+MeasuredPlan PlanFor(const PhantomParams& p, AorticPhantom& phantom)
+{
+  phantom = GenerateAorticPhantom(p);
+  return testing::MeasureFromCt(*phantom.ct, phantom.truth.seedLps);
+}
+
+class KnownNeck : public ::testing::TestWithParam<double>
+{
+};
+
+TEST_P(KnownNeck, MainBodyIsTheSizeNearestFifteenPercentWithinTenToTwenty)
+{
+  PhantomParams p;
+  p.neckDiameterMm = GetParam();
+  AorticPhantom phantom;
+  const MeasuredPlan plan = PlanFor(p, phantom);
+  const double a = plan.measurements.Value("proximalNeckDiameter");
+  ASSERT_NEAR(a, GetParam(), 1.0); // issue 5's bar: the selection sees the neck it should
+  const DeviceCatalog catalog = ReadDeviceCatalog(SGP_DEVICES_JSON);
+  const DeviceSelection selection = SelectDevice(SizingFromMeasurements(plan.measurements), catalog);
+  ASSERT_EQ(selection.families.size(), catalog.families.size());
+  for (std::size_t f = 0; f < catalog.families.size(); ++f)
+  {
+    SCOPED_TRACE(catalog.families[f].name);
+    // Brute force over the catalogue: the size inside 10–20 % nearest 15 %.
+    double best = std::nan(""), bestDistance = 1e9;
+    for (const DeviceSize& size : catalog.families[f].mainBodies.sizes)
+    {
+      const double over = 100.0 * (size.diameterMm / a - 1.0);
+      if (over >= 10.0 && over <= 20.0 && std::abs(over - 15.0) < bestDistance)
+      {
+        best = size.diameterMm;
+        bestDistance = std::abs(over - 15.0);
+      }
+    }
+    const SizeChoice& chosen = selection.families[f].mainBody;
+    if (std::isnan(best))
+      EXPECT_FALSE(chosen.Chosen()) << chosen.diameterMm;
+    else
+    {
+      EXPECT_EQ(chosen.diameterMm, best);
+      EXPECT_GE(chosen.oversizingPercent, 10.0);
+      EXPECT_LE(chosen.oversizingPercent, 20.0);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(GraftFit, KnownNeck, ::testing::Values(22.0, 27.0));
+
+TEST(GraftFit, NineMillimetreNeck_FailsTheNeckLengthCriteria)
+{
+  PhantomParams p;
+  p.neckLengthMm = 9.0;
+  AorticPhantom phantom;
+  const MeasuredPlan plan = PlanFor(p, phantom);
+  const double neck = plan.measurements.Value("proximalNeckLength");
+  EXPECT_NEAR(neck, 9.0, 3.0); // issue 5's length bar
+  const DeviceCatalog catalog = ReadDeviceCatalog(SGP_DEVICES_JSON);
+  const DeviceSelection measured = SelectDevice(SizingFromMeasurements(plan.measurements), catalog);
+  // Every family needing ≥ 15 mm fails by about 6 mm (the measured neck's error, ≤ 3 mm, on top).
+  for (const FamilyEvaluation& family : measured.families)
+  {
+    const CriterionCheck& c = Check(family, "neck length");
+    if (c.min >= 15.0)
+    {
+      EXPECT_EQ(c.status, CheckStatus::Fail) << family.family << ": " << c.text;
+      EXPECT_NEAR(c.margin, neck - c.min, 1e-9) << c.text;
+    }
+  }
+  // On the phantom's analytic neck (9 mm) the margins are exact: −1 mm for Endurant II's ≥ 10 mm
+  // (β = 0 ≤ 60°), −6 mm for the ≥ 15 mm devices.
+  SizingAnatomy truth = SizingFromMeasurements(plan.measurements);
+  truth.proximalNeckLengthMm = phantom.truth.sizing.proximalNeckLength;
+  const DeviceSelection exact = SelectDevice(truth, catalog);
+  for (const FamilyEvaluation& family : exact.families)
+  {
+    const CriterionCheck& c = Check(family, "neck length");
+    EXPECT_EQ(c.status, CheckStatus::Fail) << c.text;
+    EXPECT_NEAR(c.margin, family.family == "Endurant II" ? -1.0 : -6.0, 1e-9) << family.family << ": " << c.text;
+  }
+  EXPECT_LT(exact.recommended, 0); // no device within IFU
+}
+
+class DefaultPhantomGraft : public ::testing::Test
+{
+protected:
+  static void SetUpTestSuite()
+  {
+    phantom = new AorticPhantom(GenerateAorticPhantom(PhantomParams{}));
+    plan = new MeasuredPlan(testing::MeasureFromCt(*phantom->ct, phantom->truth.seedLps));
+  }
+  static void TearDownTestSuite()
+  {
+    delete plan;
+    delete phantom;
+  }
+  static AorticPhantom* phantom;
+  static MeasuredPlan* plan;
+};
+AorticPhantom* DefaultPhantomGraft::phantom = nullptr;
+MeasuredPlan* DefaultPhantomGraft::plan = nullptr;
+
+TEST_F(DefaultPhantomGraft, CorrectlySized_OnTheWallInTheNeckAndSealing)
+{
+  // 25 mm main body on the 22 mm neck (+14 %), 14 mm limbs on 12 mm iliacs (+17 %).
+  const FitCheck c = Simulate(*plan, { 25.0, 14.0, 14.0 });
+  // The first three rings (8 mm of neck) press on the wall: the gap is the wall force's
+  // softening at most (Huber δ = 1 mm; in practice a few tenths).
+  EXPECT_LT(NeckMean(plan->mesh, c.appositionMm, 3), 0.3);
+  // The graft seals over the whole 25 mm neck (ring spacing ≤ 4 mm quantizes the length).
+  EXPECT_GE(c.proximalSealLengthMm, phantom->truth.sizing.proximalNeckLength - 4.0);
+  EXPECT_GE(c.rightIliacSealLengthMm, 10.0);
+  EXPECT_GE(c.leftIliacSealLengthMm, 10.0);
+  EXPECT_NEAR(c.proximalOversizingPercent, 100.0 * (25.0 / 22.0 - 1.0), 5.0); // (a) within 1 mm of 22
+  EXPECT_FALSE(c.migrationRisk);
+  EXPECT_EQ(c.CoveredOstia(), "none");
+  EXPECT_TRUE(c.Passed()) << c.findings.front();
+}
+
+TEST_F(DefaultPhantomGraft, Undersized_GapInTheNeckAndMigrationRisk)
+{
+  // An 18 mm main body in a 22 mm neck stops at its radius: a 2 mm gap all round.
+  const FitCheck c = Simulate(*plan, { 18.0, 14.0, 14.0 });
+  // (22 − 18)/2 = 2 mm; above 1.5 mm: the ring opens to within 2 % of R, and the segmented wall
+  // lies within half a voxel (0.4 mm) of the analytic one.
+  EXPECT_GT(NeckMean(plan->mesh, c.appositionMm, 3), 1.5);
+  EXPECT_LT(c.proximalSealLengthMm, 10.0);
+  EXPECT_TRUE(c.migrationRisk);
+  EXPECT_LT(c.proximalOversizingPercent, 0.0);
+  EXPECT_FALSE(c.Passed());
+}
+
+TEST_F(DefaultPhantomGraft, GraftAboveTheLowestRenal_CoversItsOstium)
+{
+  // The plan's graft starts at the lower edge of the lowest (right) renal ostium: nothing covered.
+  const FitCheck atSite = Simulate(*plan, { 25.0, 14.0, 14.0 });
+  EXPECT_EQ(atSite.CoveredOstia(), "none");
+  // Started 10 mm higher, its top reaches over the whole right renal ostium (6 mm across).
+  MeasuredPlan higher = *plan;
+  StentMeshParams meshParams;
+  meshParams.proximalAbscissaMm = plan->site.abscissaMm - 10.0;
+  testing::FitAndMeasure(higher, meshParams);
+  const FitCheck above = Simulate(higher, { 25.0, 14.0, 14.0 });
+  bool rightRenalCovered = false;
+  for (const OstiumCoverage& o : above.ostia)
+    if (o.branch == "rightRenal")
+      rightRenalCovered = o.covered;
+  EXPECT_TRUE(rightRenalCovered) << above.CoveredOstia();
+  EXPECT_FALSE(above.Passed());
+}
+
+TEST_F(DefaultPhantomGraft, MismatchedMeasurements_InputError)
+{
+  MeasuredPlan other = *plan;
+  StentMeshParams meshParams;
+  meshParams.ringSpacingMm = 2.0; // another mesh: its rings are not the measured ones
+  other.mesh = BuildStentMesh(plan->tree, meshParams);
+  EXPECT_THROW(CheckGraftFit(other.mesh, other.mesh.V, Eigen::VectorXd::Zero(other.mesh.V.rows()), plan->measurements,
+                             plan->tree, { 25.0, 14.0, 14.0 }),
+               InputError);
+}
+
+} // namespace
+} // namespace sgp
