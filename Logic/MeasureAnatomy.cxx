@@ -84,6 +84,13 @@ const char* Side(int side)
   return side == 0 ? "right" : "left";
 }
 
+/// A ring whose smallest diameter is under half its mean has folded or cut the wall obliquely:
+/// its mean is not a diameter of the vessel.
+bool Distorted(const RingDiameters& r)
+{
+  return r.minMm < 0.5 * r.meanMm;
+}
+
 } // namespace
 
 const Measurement* Measurements::Find(const std::string& name) const
@@ -173,22 +180,54 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
                        "(d) smallest mean ring diameter between (c) and the trunk's last ring (3 stent radii above the "
                        "flow divider), lumen"));
 
-  // (e), (f): the distal landing zone of each leg.
+  // (e), (f): the distal landing zone of each leg, from the rings that kept their shape; where
+  // the fit collapsed there (a tortuous iliac can fold the rings), the centerline's inscribed
+  // diameter instead, with a warning.
   for (int side = 0; side < 2; ++side)
   {
     const DiameterProfile& leg = out.profiles[1 + side];
+    const Centerline& vessel = *iliac[side];
     const double end = leg.rings.back().abscissaMm, start = end - landingZoneMm;
     std::vector<double> means;
+    int distorted = 0;
     for (const RingDiameters& r : leg.rings)
       if (r.abscissaMm >= start - 1e-9)
-        means.push_back(r.meanMm);
+      {
+        if (Distorted(r))
+          ++distorted;
+        else
+          means.push_back(r.meanMm);
+      }
     RingDiameters zone = leg.At(0.5 * (start + end));
-    zone.meanMm = Median(means);
-    v.push_back(Diameter(std::string(Side(side)) + "IliacDiameter", zone, leg.vessel,
-                         std::string(side == 0 ? "(e)" : "(f)") +
-                           " median mean ring diameter of the common iliac over the leg's distal 15 mm (landing zone "
-                           "ending 5 mm above the internal iliac origin), lumen"));
+    const std::string name = std::string(Side(side)) + "IliacDiameter";
+    std::string definition = std::string(side == 0 ? "(e)" : "(f)") +
+                             " median mean ring diameter of the common iliac over the leg's distal 15 mm (landing "
+                             "zone ending 5 mm above the internal iliac origin), lumen";
+    if (means.size() >= 2)
+      zone.meanMm = Median(means);
+    else
+    {
+      std::vector<double> inscribed;
+      for (Eigen::Index i = 0; i < vessel.Size(); ++i)
+        if (vessel.abscissaMm[i] >= start - 1e-9 && vessel.abscissaMm[i] <= end + 1e-9)
+          inscribed.push_back(2.0 * vessel.radiusMm[i]);
+      zone.meanMm = inscribed.empty() ? nan : Median(inscribed);
+      zone.minMm = zone.maxMm = zone.areaMm = zone.meanMm;
+      definition += "; the fitted rings there are distorted, so: median inscribed-sphere diameter of the centerline";
+      out.warnings.push_back(std::to_string(distorted) + " of the " + Side(side) +
+                             " leg's rings in its landing zone are distorted (smallest diameter under half the mean: "
+                             "a tortuous iliac?); " +
+                             name + " is the centerline's inscribed diameter there, " + FormatNumber(zone.meanMm) +
+                             " mm.");
+    }
+    v.push_back(Diameter(name, zone, leg.vessel, definition));
   }
+  // (a)–(d) read one ring each: say so when it is distorted.
+  for (const Measurement& m : v)
+    if (m.vessel == "aorta" && m.minMm < 0.5 * m.value)
+      out.warnings.push_back(m.name + ": the ring at " + FormatNumber(m.abscissaMm) +
+                             " mm along the aorta is distorted (smallest diameter " + FormatNumber(m.minMm) +
+                             " mm, mean " + FormatNumber(m.value) + " mm); check the fit there.");
 
   // Lengths.
   const double aValue = a.meanMm;

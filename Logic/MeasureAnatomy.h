@@ -18,7 +18,10 @@
 ///    smallest between (c)'s ring and the trunk's last ring (3 stent radii above the junction, away
 ///    from the flow divider); (e)/(f) `rightIliacDiameter`/`leftIliacDiameter` the median over the
 ///    leg's rings in its distal 15 mm (the distal landing zone, ending 5 mm above the internal
-///    iliac origin);
+///    iliac origin), leaving out distorted rings (smallest diameter under half the mean: the fit
+///    folded there, as in a tortuous iliac) — with fewer than two left, the median
+///    inscribed-sphere diameter of the centerline there, and a warning; a distorted ring under
+///    (a)–(d) gives a warning;
 ///  - `proximalNeckLength`: site to where the aorta first exceeds (a) by 10 % (linear between
 ///    rings), the usual clinical rule — judged on each ring's smallest diameter, the minor axis
 ///    clinicians use in angulated necks, because a ring that cuts a bend obliquely has a larger

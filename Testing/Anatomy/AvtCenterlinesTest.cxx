@@ -102,16 +102,16 @@ TEST_P(AvtCase, LabelledYWithIliacsOnThePatientsSides)
     }
 }
 
-TEST_P(AvtCase, MeasureModeStentSurfaceSettlesOnTheWall)
+TEST_P(AvtCase, MeasureModeStentSurfaceSettlesOnTheWallAndMeasuresPlausibly)
 {
   const std::string name = GetParam();
   const auto mask = ReadLabelMap(sharedDir + "/data/avt/avt_dongyang_" + name + ".seg.nrrd");
   const auto ct = PaintCt(*mask, static_cast<unsigned>(name[1] - '0'));
-  const LabelImage::Pointer lumen = GrowLumenRegion(*ct, IndexToLps(*mask, SeedOf(name)), RegionGrowingParams{}).mask;
-  const StentMesh mesh = BuildStentMesh(testing::CenterlinesFromMask(*lumen));
-  const ActiveContourResult r =
-    FitActiveContour(mesh, WallDistanceField::FromLumen(*lumen), ActiveContourParams::Measure());
-  std::cout << name << ": " << mesh.V.rows() << " vertices, " << r.iterations << " iterations" << std::endl;
+  // As the CLI runs it: site, mesh from the site, wall field around the rings, fit, measurements.
+  const testing::MeasuredPlan plan = testing::MeasureFromCt(*ct, IndexToLps(*mask, SeedOf(name)));
+  const ActiveContourResult& r = plan.fit;
+  std::cout << name << ": " << plan.mesh.V.rows() << " vertices, " << r.iterations << " iterations, site from "
+            << ToString(plan.site.source) << std::endl;
   EXPECT_TRUE(r.converged);
   // On the wall: within 1.5 mm of it (half a 3 mm slice) for 90 % of the vertices or more — the
   // rest sit at ostia and at the flow divider, where there is no wall to lie on.
@@ -119,6 +119,22 @@ TEST_P(AvtCase, MeasureModeStentSurfaceSettlesOnTheWall)
   for (Eigen::Index i = 0; i < r.wallDistanceMm.size(); ++i)
     onWall += std::abs(r.wallDistanceMm[i]) < 1.5;
   EXPECT_GT(double(onWall) / double(r.wallDistanceMm.size()), 0.9);
+  // No truth here, so plausibility for adult, non-aneurysmal vessels: common iliacs 6–16 mm across,
+  // a distal aorta 10–25 mm, common iliacs 20–100 mm long to the internal iliac origin.
+  const Measurements& m = plan.measurements;
+  for (const char* iliac : { "rightIliacDiameter", "leftIliacDiameter" })
+  {
+    EXPECT_GT(m.Value(iliac), 6.0) << iliac;
+    EXPECT_LT(m.Value(iliac), 16.0) << iliac;
+  }
+  EXPECT_GT(m.Value("distalNeckMinDiameter"), 10.0);
+  EXPECT_LT(m.Value("distalNeckMinDiameter"), 25.0);
+  for (const char* length : { "rightIliacLength", "leftIliacLength" })
+  {
+    EXPECT_GT(m.Value(length), 20.0) << length;
+    EXPECT_LT(m.Value(length), 100.0) << length;
+  }
+  EXPECT_GT(m.Value("proximalSiteToBifurcationLength"), 50.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(RealAnatomy, AvtCase, ::testing::Values("D1", "D2", "D3", "D4"));

@@ -1,4 +1,5 @@
 // Measurements (a)–(f), lengths and angles against the phantom's analytic truth (issue 5).
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -161,6 +162,35 @@ TEST_F(NoisyPhantomMeasurements, NoRenalsNoPoint_TopOfTheAortaWithWarning)
   EXPECT_EQ(site.abscissaMm, 0.0);
   EXPECT_NE(site.warning.find("top of the aortic centerline"), std::string::npos) << site.warning;
   EXPECT_NE(site.warning.find("lowestRenalOstium"), std::string::npos) << site.warning;
+}
+
+TEST_F(NoisyPhantomMeasurements, FoldedLandingZoneRings_InscribedDiameterAndWarning)
+{
+  // Flatten the right leg's distal rings onto a line through their centres (as a fit folded in a
+  // tortuous iliac would): their mean is no diameter, so (e) falls back to the centerline.
+  Points V = plan->fit.V;
+  const StentMesh& mesh = plan->mesh;
+  const int last = mesh.RingsIn(RightLegSegment) - 1;
+  for (int k = last - 4; k <= last; ++k)
+    for (int j = 0; j < mesh.verticesPerRing; ++j)
+    {
+      const int id = mesh.Id(RightLegSegment, k, j);
+      const Eigen::Vector3d offset = V.row(id) - mesh.centre.row(id);
+      const Eigen::Vector3d u = (V.row(mesh.Id(RightLegSegment, k, 0)) - mesh.centre.row(id)).normalized();
+      V.row(id) = mesh.centre.row(id) + offset.dot(u) * u.transpose(); // onto the line along u
+    }
+  const Measurements m = MeasureAnatomy(plan->tree, mesh, V, plan->site);
+  // The inscribed-sphere diameter of the 12 mm common iliac: within one voxel diagonal (1.4 mm)
+  // below it (the sphere is centred on voxel centres of the voxelized lumen).
+  EXPECT_NEAR(m.Value("rightIliacDiameter"), 12.0 - 0.7, 0.7);
+  EXPECT_NE(m.Find("rightIliacDiameter")->definition.find("inscribed-sphere"), std::string::npos);
+  const auto warned =
+    std::find_if(m.warnings.begin(), m.warnings.end(),
+                 [](const std::string& w)
+                 { return w.find("right leg's rings in its landing zone are distorted") != std::string::npos; });
+  EXPECT_NE(warned, m.warnings.end());
+  // The left leg was not touched: still its rings' median.
+  EXPECT_DOUBLE_EQ(m.Value("leftIliacDiameter"), plan->measurements.Value("leftIliacDiameter"));
 }
 
 TEST_F(NoisyPhantomMeasurements, OstiumPointFarFromTheAorta_InputErrorNamesIt)
