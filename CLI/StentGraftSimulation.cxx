@@ -121,22 +121,8 @@ int main(int argc, char* argv[])
     const bool wantDevice = !outputSimulatedStentModel.empty() || !outputReport.empty() || !outputMeasurements.empty();
     const bool wantMeasurements = wantDevice || !outputDiameterProfile.empty();
     const bool wantStent = wantMeasurements || !outputStentModel.empty() || !outputInitialStentModel.empty();
-    if (proximalOversizingRange.size() != 2 || limbOversizingRange.size() != 2)
-      throw InputError("proximalOversizingRange and limbOversizingRange take two values each (min,max in %); got " +
-                       std::to_string(proximalOversizingRange.size()) + " and " +
-                       std::to_string(limbOversizingRange.size()) + ".");
-    for (const auto& [name, range] : { std::pair{ "proximalOversizingRange", &proximalOversizingRange },
-                                       std::pair{ "limbOversizingRange", &limbOversizingRange } })
-      if ((*range)[0] > (*range)[1])
-        throw InputError(std::string(name) + " is " + FormatNumber((*range)[0]) + "," + FormatNumber((*range)[1]) +
-                         " %; expected min,max with min <= max (e.g. 10,20).");
-    DeviceSelectionParams selectionParams;
-    selectionParams.proximalOversizingMinPercent = proximalOversizingRange[0];
-    selectionParams.proximalOversizingMaxPercent = proximalOversizingRange[1];
-    selectionParams.limbOversizingMinPercent = limbOversizingRange[0];
-    selectionParams.limbOversizingMaxPercent = limbOversizingRange[1];
-    selectionParams.forcedDevice = device == "auto" ? std::string() : device;
-    ValidateDeviceSelectionParams(selectionParams);
+    const DeviceSelectionParams selectionParams =
+      MakeDeviceSelectionParams(device, proximalOversizingRange, limbOversizingRange);
     // The catalogue is read before any heavy work: a broken catalogue fails at once.
     const std::string catalogPath = deviceCatalog.empty() ? DefaultDeviceCatalog(argv[0]) : deviceCatalog;
     DeviceCatalog catalog;

@@ -2,6 +2,7 @@
 
 #include "CheckRange.h"
 #include "Errors.h"
+#include "Format.h"
 
 namespace sgp
 {
@@ -154,6 +155,30 @@ void ValidateParameters(const std::string& inputVolume,
   for (double w :
        { acmParams.weights.w1, acmParams.weights.w2, acmParams.weights.w3, acmParams.weights.w4, acmParams.weights.w5 })
     CheckRange("a stiffness weight", w, 0.0, 1e6, "");
+}
+
+DeviceSelectionParams MakeDeviceSelectionParams(const std::string& device,
+                                                const std::vector<double>& proximalOversizingRange,
+                                                const std::vector<double>& limbOversizingRange)
+{
+  for (const auto& [name, range] : { std::pair{ "proximalOversizingRange", &proximalOversizingRange },
+                                     std::pair{ "limbOversizingRange", &limbOversizingRange } })
+  {
+    if (range->size() != 2)
+      throw InputError(std::string(name) + " has " + std::to_string(range->size()) +
+                       " values; expected two, min,max in % (e.g. 10,20).");
+    if ((*range)[0] > (*range)[1])
+      throw InputError(std::string(name) + " is " + FormatNumber((*range)[0]) + "," + FormatNumber((*range)[1]) +
+                       " %; expected min,max with min <= max (e.g. 10,20).");
+  }
+  DeviceSelectionParams params;
+  params.proximalOversizingMinPercent = proximalOversizingRange[0];
+  params.proximalOversizingMaxPercent = proximalOversizingRange[1];
+  params.limbOversizingMinPercent = limbOversizingRange[0];
+  params.limbOversizingMaxPercent = limbOversizingRange[1];
+  params.forcedDevice = device == "auto" ? std::string() : device;
+  ValidateDeviceSelectionParams(params);
+  return params;
 }
 
 } // namespace sgp

@@ -10,6 +10,7 @@
 #include "ActiveContour.h"
 #include "GrowLumenRegion.h"
 #include "LabelAortoIliacTree.h"
+#include "SelectDevice.h"
 #include "SkeletonGraph.h"
 #include "Types.h"
 
@@ -56,6 +57,13 @@ ActiveContourParams MakeActiveContourParams(const std::string& acmMode,
                                             double wallSofteningMm,
                                             int acmMaxIterations,
                                             double acmToleranceMm);
+
+/// The device-selection parameters: `device` "auto" (every family) or "Family[:diameter]"; each
+/// range two values min,max in %. \throws InputError for a range that is not two values, or
+/// min > max, or out of [0, 100] (ValidateDeviceSelectionParams).
+DeviceSelectionParams MakeDeviceSelectionParams(const std::string& device,
+                                                const std::vector<double>& proximalOversizingRange,
+                                                const std::vector<double>& limbOversizingRange);
 
 /// Checks the inputs a run needs: an input volume, a seed of three numbers, and parameters in
 /// range. \throws InputError naming the value and what was expected.

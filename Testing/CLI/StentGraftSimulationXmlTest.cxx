@@ -53,7 +53,16 @@ TEST(StentGraftSimulationXml, Defaults_EqualRegionGrowingParams)
   };
   same(acm("measure"), ActiveContourParams::Measure());
   same(acm("simulate"), ActiveContourParams::Simulate({ 24.0, 12.0, 12.0 }));
-  EXPECT_TRUE(seed.empty()); // required: no default point
+  const DeviceSelectionParams devices = MakeDeviceSelectionParams(device, proximalOversizingRange, limbOversizingRange);
+  const DeviceSelectionParams deviceDefaults;
+  EXPECT_EQ(devices.proximalOversizingMinPercent, deviceDefaults.proximalOversizingMinPercent);
+  EXPECT_EQ(devices.proximalOversizingMaxPercent, deviceDefaults.proximalOversizingMaxPercent);
+  EXPECT_EQ(devices.limbOversizingMinPercent, deviceDefaults.limbOversizingMinPercent);
+  EXPECT_EQ(devices.limbOversizingMaxPercent, deviceDefaults.limbOversizingMaxPercent);
+  EXPECT_EQ(devices.forcedDevice, deviceDefaults.forcedDevice); // "auto": every family
+  EXPECT_TRUE(lowestRenalOstium.empty());                       // optional: no default point
+  EXPECT_TRUE(deviceCatalog.empty());                           // the catalogue beside the CLI
+  EXPECT_TRUE(seed.empty());                                    // required: no default point
   EXPECT_EQ(std::string(XMLModuleDescription).rfind("<?xml ", 0), 0u);
 }
 
