@@ -46,14 +46,6 @@ void PrintWarnings(const std::vector<std::string>& warnings)
   }
 }
 
-/// A measurement as a return value: −1 when it could not be measured (every such value is
-/// positive when measured; the XML says so).
-std::string ReturnMeasurement(const sgp::Measurements& m, const std::string& name)
-{
-  const double value = m.Value(name);
-  return sgp::FormatReturnValue(std::isfinite(value) ? value : -1.0);
-}
-
 /// The device catalogue installed beside the executable (CMake copies Resources/devices.json
 /// there, in the build tree and on install).
 std::string DefaultDeviceCatalog(const char* argv0)
@@ -82,7 +74,8 @@ int FamilyToSimulate(const sgp::DeviceSelection& selection)
   return best;
 }
 
-/// A size or length as a return value: −1 when there is none.
+/// A measurement, size or length as a return value: −1 when there is none (every such value is
+/// positive when measured; the XML says so).
 std::string OrMinusOne(double value)
 {
   return sgp::FormatReturnValue(std::isfinite(value) ? value : -1.0);
@@ -190,7 +183,7 @@ int main(int argc, char* argv[])
     {
       progress.Begin("FitStent", "Fitting the bifurcated stent surface (active contour)");
       const ProximalSite site = FindProximalSite(centerlines, lowestRenalOstiumLps);
-      if (!site.warning.empty())
+      if (!wantMeasurements && !site.warning.empty()) // otherwise among the measurements' warnings
         std::cerr << "WARNING: " << site.warning << std::endl;
       if (meshParams.proximalAbscissaMm < 0.0)
         meshParams.proximalAbscissaMm = site.abscissaMm;
@@ -216,8 +209,7 @@ int main(int argc, char* argv[])
         if (acmMode != "measure")
           measureFit = FitActiveContour(mesh, wall, measureParams);
         measurements = MeasureAnatomy(centerlines, mesh, acmMode == "measure" ? fit.V : measureFit.V, site);
-        for (std::size_t i = site.warning.empty() ? 0 : 1; i < measurements.warnings.size(); ++i)
-          std::cerr << "WARNING: " << measurements.warnings[i] << std::endl;
+        PrintWarnings(measurements.warnings); // the site's first, if any
       }
       if (wantDevice)
       {
@@ -333,14 +325,12 @@ int main(int argc, char* argv[])
       };
       if (wantMeasurements)
       {
-        for (const Measurement& m : measurements.values)
-          values.emplace_back(m.name, ReturnMeasurement(measurements, m.name));
+        for (const Measurement& m : rows) // the measurements, then the device's rows
+          values.emplace_back(m.name, OrMinusOne(m.value));
         values.emplace_back("proximalSiteSource", ToString(measurements.site.source));
       }
       if (wantDevice)
       {
-        for (std::size_t i = measurements.values.size(); i < rows.size(); ++i)
-          values.emplace_back(rows[i].name, OrMinusOne(rows[i].value));
         const bool simulatedAny = simulatedFamily >= 0;
         values.emplace_back("recommendedDevice",
                             selection.recommended >= 0 ? selection.families[selection.recommended].family : "none");

@@ -6,6 +6,7 @@
 #include "Errors.h"
 #include "Format.h"
 #include "Median.h"
+#include "SelectDevice.h"
 
 namespace sgp
 {
@@ -65,7 +66,7 @@ FitCheck CheckGraftFit(const StentMesh& mesh,
   {
     const int seg = mesh.segment[v], k = mesh.ring[v];
     const double vessel = measured.profiles[seg].rings[k].meanMm;
-    c.oversizingPercent[v] = 100.0 * (graft[seg] / vessel - 1.0);
+    c.oversizingPercent[v] = OversizingPercent(graft[seg], vessel);
     c.appositionMm[v] = std::max(0.0, -wallDistanceMm[v]);
     c.sealing[v] = c.appositionMm[v] <= p.contactToleranceMm ? 1 : 0;
   }
@@ -89,10 +90,10 @@ FitCheck CheckGraftFit(const StentMesh& mesh,
     std::vector<double> zone;
     for (int r = 0; r <= last; ++r)
       if (s[r] >= s[last] - landingZoneMm - 1e-9)
-        zone.push_back(100.0 * (graft[seg] / measured.profiles[seg].rings[r].meanMm - 1.0));
+        zone.push_back(OversizingPercent(graft[seg], measured.profiles[seg].rings[r].meanMm));
     *limbOversizing[side] = Median(zone);
   }
-  c.proximalOversizingPercent = 100.0 * (graft[TrunkSegment] / measured.profiles[TrunkSegment].rings[0].meanMm - 1.0);
+  c.proximalOversizingPercent = OversizingPercent(graft[TrunkSegment], measured.profiles[TrunkSegment].rings[0].meanMm);
 
   // Ostia under the graft.
   const struct

@@ -124,11 +124,7 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
   const Point3 junction = aorta.points.row(aorta.Size() - 1).transpose();
 
   // The aortic bifurcation B where the axes meet.
-  std::vector<std::pair<Point3, Eigen::Vector3d>> axes;
-  {
-    const Point3 p1 = PositionAt(aorta, L - 25.0), p2 = PositionAt(aorta, L - 5.0);
-    axes.emplace_back(p2, (p2 - p1).normalized());
-  }
+  std::vector<std::pair<Point3, Eigen::Vector3d>> axes = { Chord(aorta, L - 25.0, L - 5.0) };
   double internalIliacAbscissa[2] = { nan, nan };
   for (int side = 0; side < 2; ++side)
   {
@@ -138,9 +134,9 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
                             ProjectOntoCenterline(*iliac[side], origin->lps));
     const double end = std::isfinite(internalIliacAbscissa[side]) ? std::min(30.0, internalIliacAbscissa[side] - 5.0)
                                                                   : std::min(30.0, iliac[side]->LengthMm());
-    const Point3 q1 = PositionAt(*iliac[side], std::min(10.0, 0.5 * end)), q2 = PositionAt(*iliac[side], end);
-    if ((q2 - q1).norm() > 1.0)
-      axes.emplace_back(q1, (q2 - q1).normalized());
+    const double from = std::min(10.0, 0.5 * end);
+    if ((PositionAt(*iliac[side], end) - PositionAt(*iliac[side], from)).norm() > 1.0)
+      axes.push_back(Chord(*iliac[side], from, end));
   }
   Point3 B = axes.size() == 3 ? NearestToLines(axes) : junction;
   if (!B.allFinite() || (B - junction).norm() > bifurcationSnapMm)
