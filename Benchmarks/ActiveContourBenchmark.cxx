@@ -9,7 +9,7 @@
 #include <Eigen/SparseCholesky>
 #include <benchmark/benchmark.h>
 
-#include "ActiveContour.h"
+#include "Stent/ActiveContour.h"
 #include "YPhantom.h"
 
 namespace

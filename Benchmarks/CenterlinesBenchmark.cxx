@@ -3,9 +3,9 @@
 // run_benchmarks.py times beside it). The labelling of the Y is timed separately.
 #include <benchmark/benchmark.h>
 
-#include "GrowLumenRegion.h"
-#include "LabelAortoIliacTree.h"
+#include "Centerlines/LabelAortoIliacTree.h"
 #include "LargePhantom.h"
+#include "Segmentation/GrowLumenRegion.h"
 
 namespace
 {

@@ -2,9 +2,9 @@
 // project's 2-core machine. Counters: voxels per second, Dice against the truth, lumen mL.
 #include <benchmark/benchmark.h>
 
-#include "GrowLumenRegion.h"
 #include "LargePhantom.h"
 #include "PhantomTestSupport.h"
+#include "Segmentation/GrowLumenRegion.h"
 
 namespace
 {

@@ -19,7 +19,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from benchmark_whole_job import cpu_name, whole_job_rows  # noqa: E402  (the whole job vs its reading floor)
+from benchmark_whole_job import cpu_name, memory_rows, whole_job_rows  # noqa: E402  (the whole job vs its reading floor)
 
 
 def main():
@@ -68,7 +68,8 @@ def main():
                  "%.2f s vs %.2f s" % (ours, theirs), "faster than the peer", ours < theirs,
                  "agreement %s voxels (symmetric mean distance)" % row[5].strip()))
 
-    for what, value, target, met in whole_job_rows(build, os.path.join(work, "whole-job")):
+    for what, value, target, met in (whole_job_rows(build, os.path.join(work, "whole-job")) +
+                                      memory_rows(build, os.path.join(work, "memory"))):
         rows.append((what, value, target, met, ""))
 
     print("Machine: %s, %d cores, %s" % (cpu_name(), os.cpu_count(), platform.platform()))

@@ -1,8 +1,8 @@
 #include "StentGraftSimulationParameters.h"
 
-#include "CheckRange.h"
-#include "Errors.h"
-#include "Format.h"
+#include "Common/CheckRange.h"
+#include "Common/Errors.h"
+#include "Common/Format.h"
 
 namespace sgp
 {

@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "ActiveContour.h"
-#include "GrowLumenRegion.h"
-#include "LabelAortoIliacTree.h"
-#include "SelectDevice.h"
-#include "SkeletonGraph.h"
-#include "Types.h"
+#include "Centerlines/LabelAortoIliacTree.h"
+#include "Centerlines/SkeletonGraph.h"
+#include "Common/Types.h"
+#include "Device/SelectDevice.h"
+#include "Segmentation/GrowLumenRegion.h"
+#include "Stent/ActiveContour.h"
 
 namespace sgp
 {

@@ -1,6 +1,6 @@
 #include "SyntheticAorticPhantomParameters.h"
 
-#include "Errors.h"
+#include "Common/Errors.h"
 
 namespace sgp
 {

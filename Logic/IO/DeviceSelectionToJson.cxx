@@ -1,4 +1,4 @@
-#include "DeviceSelectionToJson.h"
+#include "IO/DeviceSelectionToJson.h"
 
 #include <cmath>
 

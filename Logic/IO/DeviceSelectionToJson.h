@@ -23,7 +23,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "../SelectDevice.h"
+#include "Device/SelectDevice.h"
 
 namespace sgp
 {

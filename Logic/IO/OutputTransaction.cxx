@@ -1,4 +1,4 @@
-#include "OutputTransaction.h"
+#include "IO/OutputTransaction.h"
 
 #include <cstdio>
 #include <random>
@@ -6,7 +6,7 @@
 
 #include <filesystem>
 
-#include "../Errors.h"
+#include "Common/Errors.h"
 
 namespace sgp
 {

@@ -1,4 +1,4 @@
-#include "ReadCtImage.h"
+#include "IO/ReadCtImage.h"
 
 #include <filesystem>
 
@@ -8,7 +8,7 @@
 #include <itkImageIOFactory.h>
 #include <itkImageSeriesReader.h>
 
-#include "../Errors.h"
+#include "Common/Errors.h"
 
 namespace sgp
 {

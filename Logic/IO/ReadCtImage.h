@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "../Types.h"
+#include "Common/Types.h"
 
 namespace sgp
 {

@@ -1,4 +1,4 @@
-#include "ReadDeviceCatalog.h"
+#include "IO/ReadDeviceCatalog.h"
 
 #include <algorithm>
 #include <fstream>
@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "../Errors.h"
+#include "Common/Errors.h"
 
 namespace sgp
 {

@@ -39,7 +39,7 @@
 
 #include <string>
 
-#include "../DeviceCatalog.h"
+#include "Device/DeviceCatalog.h"
 
 namespace sgp
 {

@@ -1,4 +1,4 @@
-#include "WriteCenterlines.h"
+#include "IO/WriteCenterlines.h"
 
 #include <cstdio>
 #include <sstream>
@@ -12,8 +12,8 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
-#include "WriteModel.h"
-#include "WriteTextFile.h"
+#include "IO/WriteModel.h"
+#include "IO/WriteTextFile.h"
 
 namespace sgp
 {

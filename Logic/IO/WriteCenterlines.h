@@ -16,7 +16,7 @@
 
 #include <string>
 
-#include "../Centerlines.h"
+#include "Centerlines/Centerlines.h"
 
 namespace sgp
 {

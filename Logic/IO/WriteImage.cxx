@@ -1,8 +1,8 @@
-#include "WriteImage.h"
+#include "IO/WriteImage.h"
 
 #include <itkImageFileWriter.h>
 
-#include "../Errors.h"
+#include "Common/Errors.h"
 
 namespace sgp
 {

@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "../Types.h"
+#include "Common/Types.h"
 
 namespace sgp
 {

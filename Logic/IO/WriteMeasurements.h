@@ -17,8 +17,8 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "FitCheck.h"
-#include "MeasureAnatomy.h"
+#include "Device/FitCheck.h"
+#include "Measurement/MeasureAnatomy.h"
 
 namespace sgp
 {

@@ -1,4 +1,4 @@
-#include "WriteModel.h"
+#include "IO/WriteModel.h"
 
 #include <vtkFieldData.h>
 #include <vtkNew.h>
@@ -7,7 +7,7 @@
 #include <vtkStringArray.h>
 #include <vtkXMLPolyDataWriter.h>
 
-#include "../Errors.h"
+#include "Common/Errors.h"
 
 namespace sgp
 {

@@ -1,9 +1,9 @@
-#include "WritePhantomTruth.h"
+#include "IO/WritePhantomTruth.h"
 
 #include <cstdio>
 #include <sstream>
 
-#include "WriteTextFile.h"
+#include "IO/WriteTextFile.h"
 
 namespace sgp
 {

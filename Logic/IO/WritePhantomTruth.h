@@ -15,7 +15,7 @@
 
 #include <string>
 
-#include "../Phantom/AorticPhantom.h"
+#include "Phantom/AorticPhantom.h"
 
 namespace sgp
 {

@@ -1,19 +1,9 @@
-#include "WriteReturnParameters.h"
+#include "IO/WriteReturnParameters.h"
 
-#include <cstdio>
-
-#include "WriteTextFile.h"
+#include "IO/WriteTextFile.h"
 
 namespace sgp
 {
-
-std::string FormatReturnValue(double value)
-{
-  char buffer[64];
-  // + 0.0 turns a negative zero (a negated coordinate of 0) into "0" rather than "-0".
-  std::snprintf(buffer, sizeof(buffer), "%.10g", value + 0.0);
-  return buffer;
-}
 
 void WriteReturnParameters(const ReturnValues& values, const std::string& path)
 {

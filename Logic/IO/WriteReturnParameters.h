@@ -11,14 +11,13 @@
 #include <utility>
 #include <vector>
 
+#include "Common/Format.h" // FormatReturnValue, for the callers that format the values
+
 namespace sgp
 {
 
 using ReturnValues = std::vector<std::pair<std::string, std::string>>;
 
 void WriteReturnParameters(const ReturnValues& values, const std::string& path);
-
-/// Formats a number with up to 10 significant digits ("34.2", "1e-05").
-std::string FormatReturnValue(double value);
 
 } // namespace sgp

@@ -1,4 +1,4 @@
-#include "WriteStentModel.h"
+#include "IO/WriteStentModel.h"
 
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
@@ -8,7 +8,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
-#include "WriteModel.h"
+#include "IO/WriteModel.h"
 
 namespace sgp
 {

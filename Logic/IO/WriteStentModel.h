@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "../StentMesh.h"
+#include "Stent/StentMesh.h"
 
 namespace sgp
 {

@@ -1,8 +1,8 @@
-#include "WriteTextFile.h"
+#include "IO/WriteTextFile.h"
 
 #include <fstream>
 
-#include "../Errors.h"
+#include "Common/Errors.h"
 
 namespace sgp
 {

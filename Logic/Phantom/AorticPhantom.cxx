@@ -1,4 +1,4 @@
-#include "AorticPhantom.h"
+#include "Phantom/AorticPhantom.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +7,9 @@
 
 #include <Eigen/Dense>
 
-#include "../CheckRange.h"
-#include "../Errors.h"
-#include "../Format.h"
+#include "Common/CheckRange.h"
+#include "Common/Errors.h"
+#include "Common/Format.h"
 
 namespace sgp
 {

@@ -13,7 +13,8 @@
 ///    bifurcation.
 ///  - **renal arteries** (radius 3 mm): the right one at the lower level (it is the lowest renal;
 ///    the lower edge of its ostium is the proximal implantation site), the left 6 mm higher;
-///    they run horizontally (laterally and slightly posteriorly) to the kidneys' hila. The patient's right is −x in LPS.
+///    they run horizontally (laterally and slightly posteriorly) to the kidneys' hila. The patient's right is −x in
+///    LPS.
 ///  - **superior mesenteric** and **coeliac** arteries leave anteriorly (−y) above the renals.
 ///  - **common iliacs** leave the bifurcation 25° from the midline, 55 mm long, then split into
 ///    **external** (continuing caudally) and **internal** iliacs (posterior and lateral).
@@ -41,7 +42,7 @@
 #include <string>
 #include <vector>
 
-#include "Types.h"
+#include "Common/Types.h"
 
 namespace sgp
 {
@@ -114,7 +115,7 @@ struct PhantomSizing
   double proximalSiteToBifurcationLength = 0.0;
   double rightIliacLength = 0.0; ///< aortic bifurcation to the right internal iliac origin
   double leftIliacLength = 0.0;
-  double neckAngleBetaDeg = 0.0;       ///< β, angle between the neck's axis and the sac's
+  double neckAngleBetaDeg = 0.0; ///< β, angle between the neck's axis and the sac's
 };
 
 struct PhantomTruth

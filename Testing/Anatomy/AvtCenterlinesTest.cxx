@@ -11,10 +11,10 @@
 
 #include <gtest/gtest.h>
 
-#include "ImageGeometry.h"
+#include "Common/ImageGeometry.h"
 #include "IO/ReadCtImage.h"
-#include "ActiveContour.h"
 #include "PipelineSupport.h"
+#include "Stent/ActiveContour.h"
 
 namespace sgp
 {

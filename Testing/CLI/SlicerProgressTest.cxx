@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "Errors.h"
+#include "Common/Errors.h"
 #include "SlicerProgress.h"
 #include "StentGraftSimulationParameters.h"
 #include "SyntheticAorticPhantomParameters.h"

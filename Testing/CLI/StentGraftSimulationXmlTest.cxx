@@ -1,7 +1,12 @@
 // The XML is the single source of truth (STYLE.md B4): the defaults GenerateCLP declares from it
 // must equal the defaults of the Logic's parameter structs, and the strict point parsing holds.
+#include <regex>
+#include <string>
+#include <vector>
+
 #include <gtest/gtest.h>
 
+#include "Pipeline/PlanValues.h"
 #include "StentGraftSimulationCLP.h"
 #include "StentGraftSimulationParameters.h"
 
@@ -64,6 +69,23 @@ TEST(StentGraftSimulationXml, Defaults_EqualRegionGrowingParams)
   EXPECT_TRUE(deviceCatalog.empty());                           // the catalogue beside the CLI
   EXPECT_TRUE(seed.empty());                                    // required: no default point
   EXPECT_EQ(std::string(XMLModuleDescription).rfind("<?xml ", 0), 0u);
+}
+
+TEST(StentGraftSimulationXml, ReturnValues_TheDeclaredOutputScalarsInTheirOrder)
+{
+  // Every scalar parameter of channel output, in the XML's order: what PlanReturnValues writes.
+  const std::string xml = XMLModuleDescription;
+  const std::regex scalar("<(double|float|integer|boolean|string|string-enumeration)>([\\s\\S]*?)</\\1>");
+  const std::regex name("<name>\\s*([A-Za-z0-9_]+)\\s*</name>");
+  std::vector<std::string> declared;
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), scalar); it != std::sregex_iterator(); ++it)
+  {
+    const std::string body = (*it)[2];
+    std::smatch found;
+    if (body.find("<channel>output</channel>") != std::string::npos && std::regex_search(body, found, name))
+      declared.push_back(found[1]);
+  }
+  EXPECT_EQ(declared, ReturnValueNames());
 }
 
 TEST(StentGraftSimulationXml, SplitNumbers_StrictComponents)

@@ -12,7 +12,10 @@ builds from the XML (test_slicer_run.run_like_slicer):
      as a Slicer markups point): proximalSiteSource = landmark, the neck and site-to-bifurcation
      lengths shrink by 10 mm;
   C. the same volume stored in RAS space (header rewritten, voxels untouched): the same values,
-     right still right.
+     right still right;
+  D. only the volume, the seed and the return-parameter file, as Slicer's generic CLI panel runs
+     it with no output selected (issue 11): every output scalar the --xml declares is in the
+     file, and (a)-(f) within the same bars.
 Checked in each: exit 0, the return-parameter file holds every measurement (the contract names
 of DESIGN.md and the angles), the diameters within 1.0 mm and lengths within 3 mm of the truth
 (issue 5's bars), β within 5 degrees; the measurements table (CSV) has the declared header and
@@ -29,7 +32,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from test_slicer_run import check, discover, finish, run_like_slicer  # noqa: E402
+from test_slicer_run import as_float, check, discover, finish, run_like_slicer  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "StentGraftPlanner"))
 from StentGraftPlannerLib import Results  # noqa: E402
@@ -191,6 +194,17 @@ def main():
         values = dict(files, inputVolume=path, seed=truth["seedRas"], **extra)
         _, returned = run_like_slicer(cli_exe, params, values, workdir, f"StentGraftSimulation {label}")
         check_run(label, returned, files, truth, source, shift)
+
+    # D: nothing asked but the return values (Slicer always passes --returnparameterfile).
+    _, returned = run_like_slicer(cli_exe, params, {"inputVolume": volume, "seed": truth["seedRas"]}, workdir,
+                                  "StentGraftSimulation D (return values only)")
+    declared = [p["name"] for p in params if p["is_return"]]
+    missing = [name for name in declared if name not in returned]
+    check(declared and not missing, f"D: all {len(declared)} declared return values written", f"missing {missing}")
+    for name in DIAMETERS:
+        value = as_float(returned.get(name))
+        check(value is not None and abs(value - truth["sizing"][name]) <= DIAMETER_MM,
+              f"D: {name} within {DIAMETER_MM} mm", f"{returned.get(name)} vs {truth['sizing'][name]:.2f}")
     return finish()
 
 

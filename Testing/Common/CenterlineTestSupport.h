@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "Centerlines.h"
+#include "Centerlines/Centerlines.h"
 #include "Phantom/AorticPhantom.h"
 
 namespace sgp::testing

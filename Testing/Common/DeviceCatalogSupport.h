@@ -15,9 +15,9 @@
 
 #include <gtest/gtest.h>
 
-#include "DeviceCatalog.h"
-#include "Errors.h"
-#include "SelectDevice.h"
+#include "Common/Errors.h"
+#include "Device/DeviceCatalog.h"
+#include "Device/SelectDevice.h"
 
 namespace sgp::testing
 {

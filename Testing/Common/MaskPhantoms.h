@@ -11,8 +11,8 @@
 
 #include <itkImageRegionIteratorWithIndex.h>
 
-#include "ImageGeometry.h"
-#include "ThinLabelMap.h"
+#include "Centerlines/ThinLabelMap.h"
+#include "Common/ImageGeometry.h"
 
 namespace sgp::testing
 {

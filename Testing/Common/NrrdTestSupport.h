@@ -6,7 +6,7 @@
 #include <fstream>
 #include <string>
 
-#include "Types.h"
+#include "Common/Types.h"
 
 namespace sgp::testing
 {

@@ -5,12 +5,12 @@
 
 #include <optional>
 
-#include "ActiveContour.h"
-#include "AssignInscribedRadii.h"
-#include "GrowLumenRegion.h"
-#include "LabelAortoIliacTree.h"
-#include "MeasureAnatomy.h"
-#include "ThinLabelMap.h"
+#include "Centerlines/AssignInscribedRadii.h"
+#include "Centerlines/LabelAortoIliacTree.h"
+#include "Centerlines/ThinLabelMap.h"
+#include "Measurement/MeasureAnatomy.h"
+#include "Segmentation/GrowLumenRegion.h"
+#include "Stent/ActiveContour.h"
 
 namespace sgp::testing
 {

@@ -3,7 +3,7 @@
 /// iliacs (6 mm) to (∓30, 0, −40) — with its analytic centerlines, for the stent and ACM tests.
 #pragma once
 
-#include "Centerlines.h"
+#include "Centerlines/Centerlines.h"
 #include "MaskPhantoms.h"
 
 namespace sgp::testing

@@ -12,10 +12,10 @@
 #include <itkMetaDataObject.h>
 #include <itkRGBPixel.h>
 
-#include "Errors.h"
-#include "TemporaryFolder.h"
-#include "ImageGeometry.h"
+#include "Common/Errors.h"
+#include "Common/ImageGeometry.h"
 #include "IO/ReadCtImage.h"
+#include "TemporaryFolder.h"
 
 namespace sgp
 {

@@ -13,12 +13,12 @@
 #include <vtkStringArray.h>
 #include <vtkXMLPolyDataReader.h>
 
-#include "Errors.h"
-#include "TemporaryFolder.h"
+#include "Common/Errors.h"
 #include "IO/OutputTransaction.h"
 #include "IO/WriteImage.h"
 #include "IO/WriteModel.h"
 #include "IO/WriteReturnParameters.h"
+#include "TemporaryFolder.h"
 
 namespace sgp
 {

@@ -1,10 +1,10 @@
 // The active contour on phantoms whose radii are known (STYLE.md B6, "Active contour").
 #include <gtest/gtest.h>
 
-#include "ActiveContour.h"
-#include "Errors.h"
+#include "Common/Errors.h"
 #include "Phantom/AorticPhantom.h"
 #include "PipelineSupport.h"
+#include "Stent/ActiveContour.h"
 #include "YPhantom.h"
 
 namespace sgp

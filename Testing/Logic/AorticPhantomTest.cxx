@@ -3,8 +3,8 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
-#include "Errors.h"
-#include "ImageGeometry.h"
+#include "Common/Errors.h"
+#include "Common/ImageGeometry.h"
 #include "Phantom/AorticPhantom.h"
 
 namespace sgp
@@ -81,7 +81,8 @@ TEST(AorticPhantom, NeckAngle_NeckAxisLeansAnteriorlyByBeta)
   EXPECT_NEAR(std::acos(neck.z()) * 180.0 / M_PI, 40.0, 1e-9);
   EXPECT_LT(neck.y(), 0.0);
   // Lengths along the aorta are kept: the site is 109 mm of axis above the bifurcation.
-  const Point3 site = [&] {
+  const Point3 site = [&]
+  {
     for (const auto& l : phantom.truth.landmarks)
       if (l.name == "proximalImplantationSite")
         return l.lps;

@@ -1,11 +1,11 @@
 // The labelled Y on the aneurysm phantom, against its analytic axes and radii.
 #include <gtest/gtest.h>
 
+#include "Centerlines/SmoothCenterline.h"
 #include "CenterlineTestSupport.h"
-#include "Errors.h"
+#include "Common/Errors.h"
 #include "MaskPhantoms.h"
 #include "PipelineSupport.h"
-#include "SmoothCenterline.h"
 
 namespace sgp
 {

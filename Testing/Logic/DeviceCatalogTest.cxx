@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "CriterionCheck.h"
-#include "DeviceCatalog.h"
+#include "Device/CriterionCheck.h"
+#include "Device/DeviceCatalog.h"
 #include "DeviceCatalogSupport.h"
 
 namespace sgp

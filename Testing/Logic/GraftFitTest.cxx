@@ -5,12 +5,12 @@
 
 #include <gtest/gtest.h>
 
-#include "Errors.h"
-#include "FitCheck.h"
+#include "Common/Errors.h"
+#include "Device/FitCheck.h"
+#include "Device/SelectDevice.h"
 #include "IO/ReadDeviceCatalog.h"
 #include "Phantom/AorticPhantom.h"
 #include "PipelineSupport.h"
-#include "SelectDevice.h"
 
 namespace sgp
 {

@@ -4,10 +4,10 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
-#include "Errors.h"
-#include "GrowLumenRegion.h"
+#include "Common/Errors.h"
 #include "Phantom/AorticPhantom.h"
 #include "PhantomTestSupport.h"
+#include "Segmentation/GrowLumenRegion.h"
 
 namespace sgp
 {

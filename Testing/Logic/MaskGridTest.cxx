@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "MaskGrid.h"
+#include "Common/MaskGrid.h"
 
 namespace sgp
 {

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "Errors.h"
-#include "MeasureAnatomy.h"
+#include "Common/Errors.h"
+#include "Measurement/MeasureAnatomy.h"
 #include "PhantomTestSupport.h"
 #include "PipelineSupport.h"
 #include "YPhantom.h"

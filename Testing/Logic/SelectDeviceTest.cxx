@@ -7,10 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include "Common/Errors.h"
+#include "Device/SelectDevice.h"
 #include "DeviceCatalogSupport.h"
-#include "Errors.h"
 #include "IO/ReadDeviceCatalog.h"
-#include "SelectDevice.h"
 
 namespace sgp
 {

@@ -1,9 +1,9 @@
 // Tests of the skeleton graph on skeletons drawn voxel by voxel, whose graph is known.
 #include <gtest/gtest.h>
 
-#include "Errors.h"
-#include "ImageGeometry.h"
-#include "SkeletonGraph.h"
+#include "Centerlines/SkeletonGraph.h"
+#include "Common/Errors.h"
+#include "Common/ImageGeometry.h"
 
 namespace sgp
 {

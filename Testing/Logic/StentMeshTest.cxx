@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "Errors.h"
-#include "StentMesh.h"
+#include "Common/Errors.h"
+#include "Stent/StentMesh.h"
 #include "YPhantom.h"
 
 namespace sgp

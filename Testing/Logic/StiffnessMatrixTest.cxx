@@ -4,8 +4,8 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
-#include "Errors.h"
-#include "StiffnessMatrix.h"
+#include "Common/Errors.h"
+#include "Stent/StiffnessMatrix.h"
 #include "YPhantom.h"
 
 namespace sgp

@@ -4,11 +4,11 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
-#include "Errors.h"
+#include "Centerlines/SimplePoint.h"
+#include "Centerlines/ThinLabelMap.h"
+#include "Common/Errors.h"
 #include "MaskPhantoms.h"
 #include "Phantom/AorticPhantom.h"
-#include "SimplePoint.h"
-#include "ThinLabelMap.h"
 
 namespace sgp
 {

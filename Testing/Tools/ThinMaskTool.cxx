@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <exception>
 
+#include "Centerlines/ThinLabelMap.h"
 #include "IO/ReadCtImage.h"
 #include "IO/WriteImage.h"
-#include "ThinLabelMap.h"
 
 int main(int argc, char* argv[])
 {

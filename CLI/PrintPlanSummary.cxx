@@ -1,0 +1,78 @@
+#include "PrintPlanSummary.h"
+
+#include <cmath>
+
+#include "Common/Format.h"
+
+namespace sgp
+{
+
+void PrintWarnings(const std::vector<std::string>& warnings, std::ostream& err)
+{
+  for (const std::string& warning : warnings)
+    err << "WARNING: " << warning << std::endl;
+}
+
+void PrintUnmeasuredValues(const std::vector<PlanValue>& values, std::ostream& err)
+{
+  std::string names;
+  for (const PlanValue& v : values)
+    if (!v.measured)
+      names += (names.empty() ? "" : ", ") + v.name;
+  if (!names.empty())
+    err << "WARNING: Not measured, so written to the return-parameter file as -1 (numbers), none or false: " << names
+        << "." << std::endl;
+}
+
+void PrintPlanSummary(const RepairPlan& plan, const std::string& acmMode, std::ostream& out)
+{
+  const LumenSegmentation& lumen = plan.lumen;
+  out << "Lumen: " << FormatNumber(lumen.volumeMl) << " mL; window " << FormatNumber(lumen.lowerHu, 0) << " to "
+      << FormatNumber(lumen.upperHu, 0) << " HU (seed median " << FormatNumber(lumen.seedMedianHu, 0) << " HU, sigma "
+      << FormatNumber(lumen.seedSigmaHu, 0) << " HU); boundary at " << FormatNumber(lumen.edgeHu, 0) << " HU"
+      << std::endl;
+  if (plan.Reached(PlanStage::Centerlines))
+  {
+    const CenterlineTree& tree = plan.centerlines;
+    out << "Centerlines: aorta " << FormatNumber(tree.aorta.LengthMm()) << " mm, right iliac "
+        << FormatNumber(tree.rightIliac.LengthMm()) << " mm, left iliac " << FormatNumber(tree.leftIliac.LengthMm())
+        << " mm; side branches:";
+    for (const Centerline& c : tree.sideBranches)
+      out << " " << c.name;
+    out << std::endl;
+  }
+  if (plan.Reached(PlanStage::StentSurface))
+    out << "Stent surface: " << plan.mesh.V.rows() << " vertices, " << acmMode << " mode, "
+        << (plan.fit.converged ? "converged" : "not converged") << " after " << plan.fit.iterations << " iterations"
+        << std::endl;
+  if (plan.Reached(PlanStage::Device))
+  {
+    out << "Device: " << plan.selection.summary << std::endl;
+    for (const std::string& reason : plan.selection.reasons)
+      out << "  " << reason << std::endl;
+    if (plan.HasGraft())
+    {
+      const FitCheck& check = plan.fitCheck;
+      out << "Simulated graft (" << plan.selection.families[plan.simulatedFamily].family << "): proximal seal "
+          << FormatNumber(check.proximalSealLengthMm) << " mm, iliac seal right "
+          << FormatNumber(check.rightIliacSealLengthMm) << " mm / left " << FormatNumber(check.leftIliacSealLengthMm)
+          << " mm, covered ostia: " << check.CoveredOstia() << "; fit check " << (check.Passed() ? "passed" : "FAILED")
+          << std::endl;
+      for (const std::string& finding : check.findings)
+        out << "  " << finding << std::endl;
+    }
+  }
+  if (plan.Reached(PlanStage::Measurements))
+  {
+    const Measurements& m = plan.measurements;
+    out << "Proximal site (" << ToString(m.site.source) << ") at " << FormatNumber(m.site.abscissaMm)
+        << " mm along the aorta" << std::endl;
+    for (const Measurement& v : m.values)
+      out << "  " << v.name << " = "
+          << (std::isfinite(v.value) ? FormatNumber(v.value, v.unit == "ratio" ? 3 : 1) + " " + v.unit
+                                     : std::string("not measured"))
+          << std::endl;
+  }
+}
+
+} // namespace sgp

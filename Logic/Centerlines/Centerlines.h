@@ -1,0 +1,74 @@
+/// \file Centerlines.h
+/// The vessel centerlines of the aorto-iliac tree (STYLE.md B2: CenterlineTree).
+///
+/// Every point is LPS mm; "right" and "left" are the patient's (right = −x in LPS).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "Common/Types.h"
+
+namespace sgp
+{
+
+/// One vessel's centerline, from its start (the proximal end, or the branching point) on.
+struct Centerline
+{
+  std::string name;           ///< aorta, rightIliac, leftIliac, rightRenal, …
+  Points points;              ///< n×3, LPS mm
+  Eigen::VectorXd radiusMm;   ///< n, inscribed-sphere radius, mm
+  Eigen::VectorXd abscissaMm; ///< n, arc length from the first point, mm
+
+  Eigen::Index Size() const { return points.rows(); }
+  double LengthMm() const { return Size() ? abscissaMm[Size() - 1] : 0.0; }
+};
+
+/// A named point: a bifurcation or an ostium on a centerline.
+struct Landmark
+{
+  std::string name;
+  Point3 lps;
+};
+
+/// The labelled Y and its side branches.
+///  - aorta: from its top in the volume down to the aortic bifurcation;
+///  - rightIliac, leftIliac: from the aortic bifurcation through the common and external iliac
+///    arteries to their distal ends;
+///  - side branches: rightRenal, leftRenal, superiorMesenteric, coeliac, rightInternalIliac,
+///    leftInternalIliac, ascendingAorta, and numbered others (aorticBranch1, rightIliacBranch1, …);
+///  - landmarks: aorticBifurcation, rightIliacBifurcation, leftIliacBifurcation (internal iliac
+///    origins), rightRenalOstium, leftRenalOstium, superiorMesentericOstium, coeliacOstium — each
+///    the branching point on the parent vessel's centerline.
+struct CenterlineTree
+{
+  Centerline aorta;
+  Centerline rightIliac;
+  Centerline leftIliac;
+  std::vector<Centerline> sideBranches;
+  std::vector<Landmark> landmarks;
+
+  /// The vessel called `name` (main or side branch), or nullptr.
+  const Centerline* FindVessel(const std::string& name) const;
+  /// The landmark called `name`, or nullptr.
+  const Landmark* FindLandmark(const std::string& name) const;
+};
+
+/// The point at arc length `s` along the centerline (linear between its points; clamped to its
+/// ends). Needs at least two points.
+Point3 PositionAt(const Centerline& c, double s);
+
+/// Arc length of the point of `c` nearest to `p` (projected onto the nearest segment), mm; and
+/// the distance from `p` to it through `distanceMm` when given. Needs at least two points.
+double ProjectOntoCenterline(const Centerline& c, const Point3& p, double* distanceMm = nullptr);
+
+/// The unit tangent of `c` at arc length `s` (downstream; the segment containing s).
+Eigen::Vector3d TangentAt(const Centerline& c, double s);
+
+/// The centerline's inscribed radius at arc length `s` (linear between points; clamped), mm.
+double RadiusAt(const Centerline& c, double s);
+
+/// Builds a Centerline from points (n×3) and radii, computing the abscissa.
+Centerline MakeCenterline(const std::string& name, const std::vector<Point3>& points, const std::vector<double>& radii);
+
+} // namespace sgp

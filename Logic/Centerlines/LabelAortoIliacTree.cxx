@@ -1,0 +1,485 @@
+#include "Centerlines/LabelAortoIliacTree.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <set>
+
+#include "Centerlines/SmoothCenterline.h"
+#include "Common/CheckRange.h"
+#include "Common/Errors.h"
+#include "Common/Format.h"
+#include "Common/Median.h"
+
+namespace sgp
+{
+
+namespace
+{
+
+/// Median radius of `edge` leaving `node`, beyond the junction's own radius (where the
+/// inscribed sphere still touches the parent vessel) and within `reach` mm after it.
+double BranchRadius(const SkeletonGraph& graph, int edge, int node, double reach)
+{
+  const auto points = PointsFrom(graph, edge, node);
+  const auto radii = RadiiFrom(graph, edge, node);
+  const double from = graph.Degree(node) >= 3 ? graph.nodes[node].radiusMm : 0.0;
+  std::vector<double> inside, all;
+  double s = 0.0;
+  for (std::size_t i = 1; i < points.size(); ++i)
+  {
+    s += (points[i] - points[i - 1]).norm();
+    all.push_back(radii[i]);
+    if (s >= from && s <= from + reach)
+      inside.push_back(radii[i]);
+  }
+  return Median(inside.empty() ? all : inside);
+}
+
+/// The widest way on from `node` other than `incoming`, or −1 at an end.
+int WidestContinuation(const SkeletonGraph& graph, int node, int incoming, double reach)
+{
+  int best = -1;
+  double bestRadius = -1.0;
+  for (int e : graph.nodes[node].edges)
+    if (e != incoming && graph.edges[e].a != graph.edges[e].b)
+    {
+      const double r = BranchRadius(graph, e, node, reach);
+      if (r > bestRadius)
+        best = e, bestRadius = r;
+    }
+  return best;
+}
+
+/// Unit direction from `node` to the point `reach` mm along `edge`, continuing through the
+/// widest branch at junctions when the edge is shorter.
+Eigen::Vector3d BranchDirection(const SkeletonGraph& graph, int edge, int node, double reach)
+{
+  const Point3 origin = graph.nodes[node].position;
+  Point3 last = origin;
+  double s = 0.0;
+  std::set<int> seen{ node };
+  for (int e = edge, from = node; e >= 0;)
+  {
+    const auto points = PointsFrom(graph, e, from);
+    for (std::size_t i = 1; i < points.size(); ++i)
+    {
+      s += (points[i] - points[i - 1]).norm();
+      last = points[i];
+      if (s >= reach)
+        return (last - origin).normalized();
+    }
+    from = graph.Other(e, from);
+    if (!seen.insert(from).second)
+      break;
+    e = WidestContinuation(graph, from, e, reach);
+  }
+  return (last - origin).norm() > 0 ? Eigen::Vector3d((last - origin).normalized()) : Eigen::Vector3d::Zero();
+}
+
+/// Total length of vessel reachable through `edge` from `node` without passing `node` again.
+double ReachableLength(const SkeletonGraph& graph, int edge, int node)
+{
+  std::set<int> seenEdges{ edge }, seenNodes{ node };
+  std::vector<int> stack{ graph.Other(edge, node) };
+  double length = graph.edges[edge].lengthMm;
+  while (!stack.empty())
+  {
+    const int n = stack.back();
+    stack.pop_back();
+    if (!seenNodes.insert(n).second)
+      continue;
+    for (int e : graph.nodes[n].edges)
+      if (seenEdges.insert(e).second)
+      {
+        length += graph.edges[e].lengthMm;
+        stack.push_back(graph.Other(e, n));
+      }
+  }
+  return length;
+}
+
+/// A vessel followed through the graph from a node along an edge.
+struct VesselPath
+{
+  std::vector<Point3> points;
+  std::vector<double> radii;
+  struct Junction
+  {
+    int node;
+    double abscissa;            ///< along the path, mm
+    std::vector<int> sideEdges; ///< the branches not taken
+  };
+  std::vector<Junction> junctions;
+  std::vector<int> nodes; ///< every node passed, the start included
+};
+
+double PathLength(const std::vector<Point3>& points)
+{
+  double s = 0.0;
+  for (std::size_t i = 1; i < points.size(); ++i)
+    s += (points[i] - points[i - 1]).norm();
+  return s;
+}
+
+/// Follows the vessel: at each junction the branch scoring best on radius × (1 + cos turn)/2.
+VesselPath FollowVessel(const SkeletonGraph& graph, int start, int firstEdge, std::set<int> blocked, double reach)
+{
+  VesselPath path;
+  path.points = PointsFrom(graph, firstEdge, start);
+  path.radii = RadiiFrom(graph, firstEdge, start);
+  path.nodes.push_back(start);
+  blocked.insert(start);
+  int node = graph.Other(firstEdge, start), incoming = firstEdge;
+  while (blocked.insert(node).second)
+  {
+    path.nodes.push_back(node);
+    std::vector<int> options;
+    for (int e : graph.nodes[node].edges)
+      if (e != incoming && graph.edges[e].a != graph.edges[e].b)
+        options.push_back(e);
+    if (options.empty())
+      break;
+    // Incoming direction over the last `reach` mm.
+    std::size_t back = path.points.size() - 1;
+    double s = 0.0;
+    while (back > 0 && s < reach)
+    {
+      s += (path.points[back] - path.points[back - 1]).norm();
+      --back;
+    }
+    const Eigen::Vector3d in = (path.points.back() - path.points[back]).normalized();
+    int best = -1;
+    double bestScore = -1.0;
+    for (int e : options)
+    {
+      const double turn = in.dot(BranchDirection(graph, e, node, reach));
+      const double score = BranchRadius(graph, e, node, reach) * (1.0 + turn) / 2.0;
+      if (score > bestScore)
+        best = e, bestScore = score;
+    }
+    VesselPath::Junction junction{ node, PathLength(path.points), {} };
+    for (int e : options)
+      if (e != best)
+        junction.sideEdges.push_back(e);
+    path.junctions.push_back(junction);
+    const auto more = PointsFrom(graph, best, node);
+    const auto moreRadii = RadiiFrom(graph, best, node);
+    path.points.insert(path.points.end(), more.begin() + 1, more.end());
+    path.radii.insert(path.radii.end(), moreRadii.begin() + 1, moreRadii.end());
+    incoming = best;
+    node = graph.Other(best, node);
+  }
+  return path;
+}
+
+/// Longest shortest-path distance in the graph, by two Dijkstra sweeps (exact on a tree).
+double LongestPathMm(const SkeletonGraph& graph)
+{
+  const auto farthest = [&](int source)
+  {
+    std::vector<double> d(graph.nodes.size(), std::numeric_limits<double>::max());
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    d[source] = 0.0;
+    queue.push({ 0.0, source });
+    while (!queue.empty())
+    {
+      const auto [dist, n] = queue.top();
+      queue.pop();
+      if (dist > d[n])
+        continue;
+      for (int e : graph.nodes[n].edges)
+      {
+        const int m = graph.Other(e, n);
+        if (dist + graph.edges[e].lengthMm < d[m])
+          queue.push({ d[m] = dist + graph.edges[e].lengthMm, m });
+      }
+    }
+    int best = source;
+    for (int n = 0; n < int(d.size()); ++n)
+      if (d[n] < std::numeric_limits<double>::max() && d[n] > d[best])
+        best = n;
+    return std::make_pair(best, d[best]);
+  };
+  return graph.nodes.empty() ? 0.0 : farthest(farthest(0).first).second;
+}
+
+struct Bifurcation
+{
+  int node = -1;
+  int up = -1, right = -1, left = -1;
+  double score = 0.0;
+};
+
+std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph, const CenterlineParams& params)
+{
+  std::vector<Bifurcation> found;
+  for (int n = 0; n < int(graph.nodes.size()); ++n)
+  {
+    if (graph.Degree(n) < 3)
+      continue;
+    struct Branch
+    {
+      int edge;
+      Eigen::Vector3d direction;
+      double radius, length;
+    };
+    std::vector<Branch> branches;
+    for (int e : graph.nodes[n].edges)
+      if (graph.edges[e].a != graph.edges[e].b)
+        branches.push_back({ e, BranchDirection(graph, e, n, params.directionReachMm),
+                             BranchRadius(graph, e, n, params.directionReachMm), ReachableLength(graph, e, n) });
+    for (const Branch& up : branches)
+    {
+      if (up.direction.z() <= 0.5 || up.length < params.minimumBranchLengthMm)
+        continue;
+      for (const Branch& right : branches)
+        for (const Branch& left : branches)
+        {
+          const bool lower = right.direction.z() < -0.2 && left.direction.z() < -0.2;
+          // Toward opposite sides of each other: the aorta may run obliquely, so the two
+          // directions are compared with each other rather than with the x axis.
+          const bool sides = left.direction.x() - right.direction.x() > 0.3;
+          const bool long_ = right.length >= params.minimumIliacLengthMm && left.length >= params.minimumIliacLengthMm;
+          const auto descends = [&](int edge)
+          {
+            const VesselPath path = FollowVessel(graph, n, edge, {}, params.directionReachMm);
+            return path.points.back().z() <= graph.nodes[n].position.z() - params.minimumIliacDescentMm;
+          };
+          // The iliacs are narrower than the aorta, but not much: this also rejects the arch in
+          // a chest scan, whose two limbs go down under a narrow supra-aortic branch.
+          const double minimum = params.minimumIliacRadiusRatio * up.radius;
+          const bool wide =
+            right.radius >= minimum && left.radius >= minimum && up.radius >= 0.8 * std::max(right.radius, left.radius);
+          if (lower && sides && long_ && wide && descends(right.edge) && descends(left.edge))
+          {
+            const double score = std::min(right.radius, left.radius);
+            if (found.empty() || found.back().node != n || found.back().score < score)
+            {
+              if (!found.empty() && found.back().node == n)
+                found.pop_back();
+              found.push_back({ n, up.edge, right.edge, left.edge, score });
+            }
+          }
+        }
+    }
+  }
+  std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.score > b.score; });
+  return found;
+}
+
+Centerline Finish(const std::string& name,
+                  const std::vector<Point3>& points,
+                  const std::vector<double>& radii,
+                  const CenterlineParams& params)
+{
+  return SmoothCenterline(MakeCenterline(name, points, radii), params.stepMm, params.smoothingMm);
+}
+
+/// A side branch before naming: the path and how it leaves its parent.
+struct SideBranch
+{
+  VesselPath path;
+  int node;
+  Eigen::Vector3d direction;
+  double radius;
+};
+
+/// Names the aorta's side branches by how they leave it (see the header, step 4); unnamed ones
+/// stay empty. `sides` are sorted from the top down; landmarks are appended.
+std::vector<std::string> NameAorticBranches(const SkeletonGraph& graph,
+                                            const std::vector<SideBranch>& sides,
+                                            const Point3& bifurcation,
+                                            std::vector<Landmark>& landmarks)
+{
+  std::vector<std::string> names(sides.size());
+  const auto height = [&](const SideBranch& s) { return graph.nodes[s.node].position.z() - bifurcation.z(); };
+  // Anterior: the superior mesenteric and, above it, the coeliac trunk.
+  std::vector<int> anterior;
+  for (int i = 0; i < int(sides.size()); ++i)
+    if (sides[i].direction.y() < -0.6 && height(sides[i]) > 30.0 && height(sides[i]) < 250.0)
+      anterior.push_back(i); // from the top down
+  double renalCeiling = 180.0;
+  if (!anterior.empty())
+  {
+    names[anterior.back()] = "superiorMesenteric";
+    landmarks.push_back({ "superiorMesentericOstium", graph.nodes[sides[anterior.back()].node].position });
+    renalCeiling = std::min(renalCeiling, height(sides[anterior.back()]) + 15.0); // renals leave below it
+  }
+  if (anterior.size() >= 2)
+  {
+    const int coeliac = anterior[anterior.size() - 2];
+    names[coeliac] = "coeliac";
+    landmarks.push_back({ "coeliacOstium", graph.nodes[sides[coeliac].node].position });
+  }
+  // Lateral, between 20 mm above the bifurcation and the superior mesenteric: the widest on each
+  // side is the renal artery, the others accessory renals.
+  for (const char* sideName : { "right", "left" })
+  {
+    const bool right = std::string(sideName) == "right";
+    int widest = -1;
+    for (int i = 0; i < int(sides.size()); ++i)
+    {
+      const Eigen::Vector3d d = sides[i].direction;
+      const bool lateral =
+        std::abs(d.x()) >= 0.5 && std::abs(d.x()) >= std::abs(d.y()) && d.z() <= 0.6 && (right ? d.x() < 0 : d.x() > 0);
+      if (names[i].empty() && lateral && height(sides[i]) > 20.0 && height(sides[i]) < renalCeiling)
+      {
+        names[i] = std::string(sideName) + "AccessoryRenal";
+        if (widest < 0 || sides[i].radius > sides[widest].radius)
+          widest = i;
+      }
+    }
+    if (widest >= 0)
+    {
+      names[widest] = std::string(sideName) + "Renal";
+      landmarks.push_back({ std::string(sideName) + "RenalOstium", graph.nodes[sides[widest].node].position });
+    }
+  }
+  return names;
+}
+
+} // namespace
+
+void ValidateCenterlineParams(const CenterlineParams& params)
+{
+  CheckRange("centerlineStepMm", params.stepMm, 0.1, 10, "mm");
+  CheckRange("centerlineSmoothingMm", params.smoothingMm, 0, 20, "mm");
+  CheckRange("directionReachMm", params.directionReachMm, 1, 100, "mm");
+  CheckRange("minimumBranchLengthMm", params.minimumBranchLengthMm, 1, 500, "mm");
+  CheckRange("minimumIliacLengthMm", params.minimumIliacLengthMm, 1, 500, "mm");
+  CheckRange("minimumIliacDescentMm", params.minimumIliacDescentMm, 0, 500, "mm");
+  CheckRange("minimumIliacRadiusRatio", params.minimumIliacRadiusRatio, 0, 1, "");
+  CheckRange("internalIliacRadiusRatio", params.internalIliacRadiusRatio, 0, 1, "");
+}
+
+CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineParams& params)
+{
+  ValidateCenterlineParams(params);
+  int ends = 0, junctions = 0;
+  for (int n = 0; n < int(graph.nodes.size()); ++n)
+  {
+    ends += graph.Degree(n) == 1;
+    junctions += graph.Degree(n) >= 3;
+  }
+  const std::string found = std::to_string(ends) + " end points, " + std::to_string(junctions) +
+                            " junctions, longest path " + FormatNumber(LongestPathMm(graph), 0) + " mm";
+  const int pieces = graph.CountComponents();
+  if (pieces != 1)
+  {
+    throw AlgorithmError("The lumen skeleton breaks into " + std::to_string(pieces) + " pieces (" + found +
+                         "); expected one connected aorto-iliac tree; check the segmentation for gaps.");
+  }
+  const std::vector<Bifurcation> candidates = FindBifurcations(graph, params);
+  if (candidates.empty())
+  {
+    throw AlgorithmError("No aortic bifurcation found in the lumen skeleton (" + found +
+                         "); expected a junction with the aorta above and an iliac artery to each side below; "
+                         "check that the scan covers the common iliac arteries and the seed lies in the aorta.");
+  }
+  const Bifurcation& y = candidates.front();
+  if (candidates.size() > 1 && candidates[1].score >= 0.9 * y.score &&
+      (graph.nodes[candidates[1].node].position - graph.nodes[y.node].position).norm() > 20.0)
+  {
+    throw AlgorithmError("Two junctions look like the aortic bifurcation, at " +
+                         FormatPoint(graph.nodes[y.node].position) + " and " +
+                         FormatPoint(graph.nodes[candidates[1].node].position) + " mm LPS (" + found +
+                         "); check the segmentation for a leak into another vessel tree.");
+  }
+
+  CenterlineTree tree;
+  const double reach = params.directionReachMm;
+  const Point3 bifurcation = graph.nodes[y.node].position;
+  tree.landmarks.push_back({ "aorticBifurcation", bifurcation });
+
+  // The aorta, upward from the bifurcation; split at its top if it comes down again (the arch).
+  VesselPath up = FollowVessel(graph, y.node, y.up, {}, reach);
+  std::set<int> mainNodes(up.nodes.begin(), up.nodes.end());
+  std::size_t top = 0;
+  for (std::size_t i = 0; i < up.points.size(); ++i)
+    if (up.points[i].z() > up.points[top].z())
+      top = i;
+  double topAbscissa = PathLength(std::vector<Point3>(up.points.begin(), up.points.begin() + long(top) + 1));
+  std::vector<SideBranch> aorticSides;
+  if (PathLength(std::vector<Point3>(up.points.begin() + long(top), up.points.end())) > params.minimumBranchLengthMm)
+  {
+    tree.sideBranches.push_back(Finish("ascendingAorta",
+                                       std::vector<Point3>(up.points.begin() + long(top), up.points.end()),
+                                       std::vector<double>(up.radii.begin() + long(top), up.radii.end()), params));
+  }
+  else
+  {
+    top = up.points.size() - 1;
+    topAbscissa = PathLength(up.points);
+  }
+  std::vector<Point3> aortaPoints(up.points.begin(), up.points.begin() + long(top) + 1);
+  std::vector<double> aortaRadii(up.radii.begin(), up.radii.begin() + long(top) + 1);
+  std::reverse(aortaPoints.begin(), aortaPoints.end());
+  std::reverse(aortaRadii.begin(), aortaRadii.end());
+  tree.aorta = Finish("aorta", aortaPoints, aortaRadii, params);
+
+  // The iliacs, each with its internal iliac.
+  const auto iliac = [&](int edge, const std::string& side, Centerline& out)
+  {
+    std::set<int> blocked = mainNodes;
+    const VesselPath path = FollowVessel(graph, y.node, edge, blocked, reach);
+    out = Finish(side + "Iliac", path.points, path.radii, params);
+    const double commonRadius = BranchRadius(graph, edge, y.node, reach);
+    bool internalFound = false;
+    int numbered = 0;
+    for (const auto& junction : path.junctions)
+      for (int e : junction.sideEdges)
+      {
+        const VesselPath branch =
+          FollowVessel(graph, junction.node, e, std::set<int>(path.nodes.begin(), path.nodes.end()), reach);
+        const bool internal =
+          !internalFound && ReachableLength(graph, e, junction.node) >= params.minimumBranchLengthMm / 2 &&
+          BranchRadius(graph, e, junction.node, reach) >= params.internalIliacRadiusRatio * commonRadius;
+        std::string name = internal ? side + "InternalIliac" : side + "IliacBranch" + std::to_string(++numbered);
+        if (internal)
+        {
+          internalFound = true;
+          tree.landmarks.push_back({ side + "IliacBifurcation", graph.nodes[junction.node].position });
+        }
+        tree.sideBranches.push_back(Finish(name, branch.points, branch.radii, params));
+      }
+  };
+  iliac(y.right, "right", tree.rightIliac);
+  iliac(y.left, "left", tree.leftIliac);
+
+  // Side branches of the aorta (those past the top belong to the ascending aorta: numbered).
+  for (const auto& junction : up.junctions)
+    for (int e : junction.sideEdges)
+    {
+      SideBranch side{ FollowVessel(graph, junction.node, e, mainNodes, reach), junction.node,
+                       BranchDirection(graph, e, junction.node, reach), BranchRadius(graph, e, junction.node, reach) };
+      if (junction.abscissa > topAbscissa + 1e-6)
+        side.direction = Eigen::Vector3d::Zero(); // not abdominal: never a renal or visceral branch
+      aorticSides.push_back(side);
+    }
+  std::sort(aorticSides.begin(), aorticSides.end(),
+            [&](const SideBranch& a, const SideBranch& b)
+            { return graph.nodes[a.node].position.z() > graph.nodes[b.node].position.z(); });
+  std::vector<std::string> names = NameAorticBranches(graph, aorticSides, bifurcation, tree.landmarks);
+  int numbered = 0;
+  for (int i = 0; i < int(aorticSides.size()); ++i)
+  {
+    if (names[i].empty())
+      names[i] = "aorticBranch" + std::to_string(++numbered);
+    tree.sideBranches.push_back(Finish(names[i], aorticSides[i].path.points, aorticSides[i].path.radii, params));
+  }
+  // Names are keys: a second accessory renal on one side becomes rightAccessoryRenal2, ….
+  for (std::size_t i = 0; i < tree.sideBranches.size(); ++i)
+  {
+    int copy = 1;
+    for (std::size_t j = i + 1; j < tree.sideBranches.size(); ++j)
+      if (tree.sideBranches[j].name == tree.sideBranches[i].name)
+        tree.sideBranches[j].name += std::to_string(++copy);
+  }
+  return tree;
+}
+
+} // namespace sgp

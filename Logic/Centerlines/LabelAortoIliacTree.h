@@ -1,0 +1,66 @@
+/// \file LabelAortoIliacTree.h
+/// Finds the aortic bifurcation in a skeleton graph and names the vessels around it: the aorta,
+/// the right and left iliac arteries, and the side branches (Egger et al. 2007, section 2: "the
+/// three vessel centerlines (aorta, right and left iliac)").
+///
+/// 1. **The bifurcation** is the junction with one branch leaving superiorly (direction's z
+///    component > 0.5, LPS z is superior) and two leaving inferiorly (z < −0.2) toward opposite
+///    sides of each other (their x components differ by more than 0.3; the one toward −x is the
+///    patient's right, whatever the image's axes; compared with each other, not with the x axis,
+///    because the aorta may run obliquely),
+///    the upper branch leading on to at least `minimumBranchLengthMm` of vessel and each lower one
+///    to at least `minimumIliacLengthMm` (common, external and internal iliacs together) and,
+///    followed as a vessel (step 2), ending at least `minimumIliacDescentMm` below the junction
+///    (which rules out junctions in the chest whose lower limbs are short branches), the two
+///    lower ones at
+///    least `minimumIliacRadiusRatio` × the upper one's radius and the upper one at least 0.8 ×
+///    the wider lower one's (which rules out the arch of a chest scan). Branch directions are taken
+///    `directionReachMm` along each branch; radii are the median beyond the junction's own
+///    radius. Of several such junctions the one with the widest pair of lower branches wins;
+///    a runner-up within 10 % of it, elsewhere, makes the answer ambiguous.
+/// 2. **The aorta** is followed upward from it, at each junction into the widest branch that
+///    continues the direction (score: radius × (1 + cos of the turn)/2), to an end; if the
+///    path passes over a top (the arch in a chest scan) and comes down again by more than
+///    `minimumBranchLengthMm`, the part after the top is the side branch `ascendingAorta`.
+///    The aorta runs from its top down to the bifurcation.
+/// 3. **The iliacs** are followed downward the same way; on each, the first side branch at
+///    least `minimumBranchLengthMm`/2 long and `internalIliacRadiusRatio` × the common iliac's
+///    radius wide is the internal iliac, and its branching point is the iliac bifurcation.
+/// 4. **Side branches** of the aorta are named by the direction in which they leave it and their
+///    height above the bifurcation: anterior (y < −0.6) between 30 and 250 mm → the lowest is the
+///    superior mesenteric, the one above it the coeliac trunk; lateral (|x| ≥ 0.5, |x| ≥ |y|,
+///    z ≤ 0.6) between 20 mm and 15 mm above the superior mesenteric (180 mm without it) → the
+///    widest on each side is the renal artery, others accessory renals. Others are numbered from
+///    the top: aorticBranch1, …; on the iliacs rightIliacBranch1, ….
+/// 5. Every vessel is smoothed and resampled (SmoothCenterline).
+///
+/// Input: a SkeletonGraph (LPS mm). Output: a CenterlineTree with landmarks.
+/// Errors (AlgorithmError, never a made-up Y): no junction qualifies as the bifurcation (the
+/// message gives the numbers of end points and junctions and the longest path, mm); two
+/// candidates (the message gives both positions); a skeleton in several pieces. InputError for
+/// parameters out of range.
+#pragma once
+
+#include "Centerlines/Centerlines.h"
+#include "Centerlines/SkeletonGraph.h"
+
+namespace sgp
+{
+
+struct CenterlineParams
+{
+  double stepMm = 1.0;                    ///< resampling step, mm; in [0.1, 10]
+  double smoothingMm = 2.0;               ///< Gaussian σ along the vessel, mm; in [0, 20]
+  double directionReachMm = 20.0;         ///< how far along a branch its direction is taken, mm
+  double minimumBranchLengthMm = 30.0;    ///< vessel beyond a bifurcation branch, mm
+  double minimumIliacLengthMm = 60.0;     ///< vessel beyond each iliac at the bifurcation, mm
+  double minimumIliacDescentMm = 40.0;    ///< how far below the bifurcation each iliac ends, mm
+  double minimumIliacRadiusRatio = 0.25;  ///< iliac radius / aortic radius at the bifurcation
+  double internalIliacRadiusRatio = 0.35; ///< internal iliac radius / common iliac radius
+};
+
+void ValidateCenterlineParams(const CenterlineParams& params);
+
+CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineParams& params = {});
+
+} // namespace sgp

@@ -1,0 +1,157 @@
+#include "Centerlines/ProximalSite.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "Common/Errors.h"
+#include "Common/Format.h"
+#include "Common/Median.h"
+
+namespace sgp
+{
+namespace
+{
+
+/// How far from the aortic centerline a user's ostium point may lie: an aortic radius plus a
+/// margin (the widest suprarenal aorta is ~15 mm in radius), mm.
+constexpr double maximumLandmarkDistanceMm = 30.0;
+/// The renal's axis is fitted to its centerline from this far outside the aortic wall…
+constexpr double renalFitStartMm = 1.0;
+/// …to this far (the first, straight part of a renal artery), mm.
+constexpr double renalFitEndMm = 16.0;
+/// Renal arteries leave the aorta at 30–90°; a smaller fitted angle is noise, clamped here.
+constexpr double minimumRenalSinAngle = 0.5;
+
+} // namespace
+
+BranchOstium FindBranchOstium(const Centerline& parent, const Centerline& branch)
+{
+  BranchOstium ostium;
+  const Point3 junction = branch.points.row(0).transpose();
+  const double sJunction = ProjectOntoCenterline(parent, junction);
+  const Point3 a = PositionAt(parent, sJunction);
+  const Eigen::Vector3d T = TangentAt(parent, sJunction);
+  const double parentRadius = RadiusAt(parent, sJunction);
+  const auto radial = [&](const Point3& p)
+  {
+    const Eigen::Vector3d w = p - a;
+    return (w - w.dot(T) * T).norm();
+  };
+  std::vector<Point3> fit;
+  std::vector<double> radii;
+  for (Eigen::Index i = 0; i < branch.Size(); ++i)
+  {
+    const Point3 p = branch.points.row(i).transpose();
+    const double outside = radial(p) - parentRadius;
+    if (outside >= renalFitStartMm && outside <= renalFitEndMm)
+    {
+      fit.push_back(p);
+      radii.push_back(branch.radiusMm[i]);
+    }
+    if (outside > renalFitEndMm)
+      break;
+  }
+  if (fit.size() < 3)
+    return ostium;
+  const double radiusMm = Median(radii);
+  const Eigen::Vector3d d = (fit.back() - fit.front()).normalized();
+  Point3 centroid = Point3::Zero();
+  for (const Point3& p : fit)
+    centroid += p;
+  centroid /= static_cast<double>(fit.size());
+  // Walk the fitted axis inward from the centroid to the aortic wall (radial distance = radius):
+  // |w⊥ + t d⊥|² = r² with w = centroid − a, ⊥ = perpendicular to T.
+  const Eigen::Vector3d w = centroid - a;
+  const Eigen::Vector3d wPerp = w - w.dot(T) * T, dPerp = d - d.dot(T) * T;
+  const double qa = dPerp.squaredNorm(), qb = 2 * wPerp.dot(dPerp),
+               qc = wPerp.squaredNorm() - parentRadius * parentRadius;
+  const double discriminant = qb * qb - 4 * qa * qc;
+  double t = 0.0;
+  if (qa > 1e-12 && discriminant >= 0.0)
+    t = (-qb + std::sqrt(discriminant)) / (2 * qa); // the near wall (both roots lie inward, t < 0)
+  const Point3 ostiumCentre = centroid + t * d;
+  const double sinAngle = std::max(d.cross(T).norm(), minimumRenalSinAngle);
+  ostium.found = true;
+  ostium.radiusMm = radiusMm;
+  ostium.centreAbscissaMm = sJunction + (ostiumCentre - a).dot(T);
+  ostium.upperAbscissaMm = ostium.centreAbscissaMm - radiusMm / sinAngle;
+  ostium.lowerAbscissaMm = ostium.centreAbscissaMm + radiusMm / sinAngle;
+  return ostium;
+}
+
+const char* ToString(ProximalSiteSource source)
+{
+  switch (source)
+  {
+    case ProximalSiteSource::Landmark:
+      return "landmark";
+    case ProximalSiteSource::Renal:
+      return "renal";
+    case ProximalSiteSource::Top:
+      break;
+  }
+  return "top";
+}
+
+ProximalSite FindProximalSite(const CenterlineTree& tree, const std::optional<Point3>& lowestRenalOstiumLps)
+{
+  const Centerline& aorta = tree.aorta;
+  if (aorta.Size() < 2)
+    throw InputError("The aortic centerline has " + std::to_string(aorta.Size()) +
+                     " points; expected at least two to place the proximal implantation site.");
+  ProximalSite site;
+  if (lowestRenalOstiumLps)
+  {
+    double distance = 0.0;
+    site.abscissaMm = ProjectOntoCenterline(aorta, *lowestRenalOstiumLps, &distance);
+    if (distance > maximumLandmarkDistanceMm)
+    {
+      throw InputError(
+        "lowestRenalOstium " +
+        FormatPoint(Point3(-lowestRenalOstiumLps->x(), -lowestRenalOstiumLps->y(), lowestRenalOstiumLps->z())) +
+        " mm RAS lies " + FormatNumber(distance) +
+        " mm from the aortic centerline; expected a point on the aortic wall "
+        "(within " +
+        FormatNumber(maximumLandmarkDistanceMm, 0) + " mm) at the lower edge of the lowest renal artery's ostium.");
+    }
+    site.source = ProximalSiteSource::Landmark;
+  }
+  else
+  {
+    double lowest = -1.0;
+    for (const char* name : { "rightRenal", "leftRenal" })
+    {
+      const Centerline* renal = tree.FindVessel(name);
+      if (!renal || renal->Size() < 2)
+        continue;
+      const BranchOstium ostium = FindBranchOstium(aorta, *renal);
+      if (ostium.found && ostium.lowerAbscissaMm > lowest)
+      {
+        lowest = ostium.lowerAbscissaMm;
+        site.renal = name;
+        site.renalRadiusMm = ostium.radiusMm;
+      }
+    }
+    if (lowest >= 0.0)
+    {
+      site.source = ProximalSiteSource::Renal;
+      site.abscissaMm = std::min(lowest, aorta.LengthMm());
+    }
+    else
+    {
+      site.source = ProximalSiteSource::Top;
+      site.abscissaMm = 0.0;
+      site.warning = "No renal artery was found on the aortic centerline and --lowestRenalOstium was not given; "
+                     "the proximal implantation site is the top of the aortic centerline (" +
+                     FormatPoint(aorta.points.row(0).transpose()) +
+                     " mm LPS), so the neck values are measured from there. Place the lowestRenalOstium point.";
+    }
+  }
+  site.lps = PositionAt(aorta, site.abscissaMm);
+  return site;
+}
+
+} // namespace sgp

@@ -1,0 +1,42 @@
+/// \file VesselOrigins.h
+/// Where the vessels of the labelled Y branch: the aortic bifurcation and the internal iliac
+/// origins, each **where the vessel axes meet**, not where the skeleton's junction lies. The
+/// junction sits distal to the true branching point, inside the merged cross-section of the two
+/// daughters (2–4 mm on our phantoms), so lengths to it read long.
+///
+///  - **Internal iliac origin** (per side): the point nearest (least squares) to the axes of the
+///    common iliac above the skeleton's junction (chord 25…5 mm before it), the external iliac
+///    below it (5…25 mm after) and the internal iliac (its centerline 5…20 mm from the
+///    junction), projected onto the iliac's centerline. The junction itself when a chord is too
+///    short (iliac < 10 mm either side of it, internal iliac < 20 mm) or the axes meet farther
+///    than 10 mm from it; NaN when no internal iliac was labelled.
+///  - **Aortic bifurcation** B: the point nearest to the axes of the distal aorta (chord 25…5 mm
+///    above the skeleton's junction) and of both common iliacs (chords from min(10 mm, half the
+///    stretch) to min(30 mm, internal iliac origin − 5 mm) below it); the junction when an iliac
+///    chord is shorter than 1 mm or the axes meet farther than 10 mm from it. Its abscissa is
+///    along the aortic centerline, extended straight past the centerline's end where B lies beyond.
+///
+/// Input: a labelled CenterlineTree (LPS mm) whose aorta has at least two points. Output in LPS mm
+/// and mm of arc length. No errors: the fallbacks above are the answer where the axes say nothing.
+#pragma once
+
+#include "Centerlines/Centerlines.h"
+
+namespace sgp
+{
+
+/// The internal iliac origin of the right (`side` 0) or left (1) iliac, as an abscissa along
+/// that iliac's centerline (mm); NaN when the tree has no internal iliac junction on that side.
+double InternalIliacOriginAbscissa(const CenterlineTree& tree, int side);
+
+struct AorticBifurcation
+{
+  Point3 lps = Point3::Zero(); ///< B, LPS mm
+  double abscissaMm = 0.0;     ///< along the aorta from its top, mm
+  bool axesMeet = false;       ///< false: B is the skeleton's junction (the fallback)
+};
+
+/// B as described in the file comment.
+AorticBifurcation FindAorticBifurcation(const CenterlineTree& tree);
+
+} // namespace sgp

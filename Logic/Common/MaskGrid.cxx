@@ -1,0 +1,296 @@
+#include "Common/MaskGrid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sgp
+{
+
+namespace
+{
+
+/// Flat offsets of the six face neighbours, with the axis and sign of each.
+struct FaceStep
+{
+  int axis;
+  int sign;
+};
+constexpr std::array<FaceStep, 6> faceSteps{ { { 0, -1 }, { 0, 1 }, { 1, -1 }, { 1, 1 }, { 2, -1 }, { 2, 1 } } };
+
+/// Flat index of the face neighbour of (ijk) along `step`, or -1 outside the box.
+long FaceNeighbour(const MaskGrid& grid, const std::array<long, 3>& ijk, const FaceStep& step)
+{
+  std::array<long, 3> n = ijk;
+  n[step.axis] += step.sign;
+  if (n[step.axis] < 0 || n[step.axis] >= grid.size[step.axis])
+  {
+    return -1;
+  }
+  return grid.Flat(n[0], n[1], n[2]);
+}
+
+bool InBox(const MaskGrid& grid, long i, long j, long k)
+{
+  return i >= 0 && j >= 0 && k >= 0 && i < grid.size[0] && j < grid.size[1] && k < grid.size[2];
+}
+
+/// Breadth-first flood over voxels with value `value`, from `starts`, marking `visited`.
+void Flood(const MaskGrid& grid, std::uint8_t value, std::vector<long>& queue, std::vector<std::uint8_t>& visited)
+{
+  for (std::size_t head = 0; head < queue.size(); ++head)
+  {
+    const std::array<long, 3> ijk = grid.Ijk(queue[head]);
+    for (const FaceStep& step : faceSteps)
+    {
+      const long n = FaceNeighbour(grid, ijk, step);
+      if (n >= 0 && !visited[n] && grid.voxels[n] == value)
+      {
+        visited[n] = 1;
+        queue.push_back(n);
+      }
+    }
+  }
+}
+
+} // namespace
+
+MaskGrid::MaskGrid(const std::array<long, 3>& boxSize)
+  : size(boxSize)
+  , voxels(static_cast<std::size_t>(boxSize[0] * boxSize[1] * boxSize[2]), 0)
+{
+}
+
+std::array<long, 3> MaskGrid::Ijk(long flat) const
+{
+  const long i = flat % size[0];
+  const long jk = flat / size[0];
+  return { i, jk % size[1], jk / size[1] };
+}
+
+long MaskGrid::CountForeground() const
+{
+  return static_cast<long>(std::count(voxels.begin(), voxels.end(), std::uint8_t{ 1 }));
+}
+
+std::vector<std::array<int, 3>> BallOffsets(const std::array<int, 3>& radiusIjk)
+{
+  std::vector<std::array<int, 3>> offsets;
+  const auto term = [](int d, int r) { return r == 0 ? 0.0 : (double(d) * d) / (double(r) * r); };
+  for (int dk = -radiusIjk[2]; dk <= radiusIjk[2]; ++dk)
+  {
+    for (int dj = -radiusIjk[1]; dj <= radiusIjk[1]; ++dj)
+    {
+      for (int di = -radiusIjk[0]; di <= radiusIjk[0]; ++di)
+      {
+        if (term(di, radiusIjk[0]) + term(dj, radiusIjk[1]) + term(dk, radiusIjk[2]) <= 1.0 + 1e-9)
+        {
+          offsets.push_back({ di, dj, dk });
+        }
+      }
+    }
+  }
+  return offsets;
+}
+
+MaskGrid Erode(const MaskGrid& mask, const std::vector<std::array<int, 3>>& ball)
+{
+  MaskGrid out(mask.size);
+  for (long flat = 0; flat < mask.Count(); ++flat)
+  {
+    if (!mask.voxels[flat])
+    {
+      continue;
+    }
+    const std::array<long, 3> ijk = mask.Ijk(flat);
+    bool keep = true;
+    for (const auto& d : ball)
+    {
+      const long i = ijk[0] + d[0], j = ijk[1] + d[1], k = ijk[2] + d[2];
+      if (!InBox(mask, i, j, k) || !mask.voxels[mask.Flat(i, j, k)])
+      {
+        keep = false;
+        break;
+      }
+    }
+    out.voxels[flat] = keep ? 1 : 0;
+  }
+  return out;
+}
+
+MaskGrid Dilate(const MaskGrid& mask, const std::vector<std::array<int, 3>>& ball)
+{
+  MaskGrid out = mask;
+  for (long flat = 0; flat < mask.Count(); ++flat)
+  {
+    if (!mask.voxels[flat])
+    {
+      continue;
+    }
+    const std::array<long, 3> ijk = mask.Ijk(flat);
+    // Interior voxels (all six faces foreground) add nothing that their neighbours do not.
+    bool boundary = false;
+    for (const FaceStep& step : faceSteps)
+    {
+      const long n = FaceNeighbour(mask, ijk, step);
+      boundary = boundary || n < 0 || !mask.voxels[n];
+    }
+    if (!boundary)
+    {
+      continue;
+    }
+    for (const auto& d : ball)
+    {
+      const long i = ijk[0] + d[0], j = ijk[1] + d[1], k = ijk[2] + d[2];
+      if (InBox(mask, i, j, k))
+      {
+        out.voxels[mask.Flat(i, j, k)] = 1;
+      }
+    }
+  }
+  return out;
+}
+
+MaskGrid ConnectedComponent(const MaskGrid& mask, long seedFlat)
+{
+  MaskGrid out(mask.size);
+  if (seedFlat < 0 || seedFlat >= mask.Count() || !mask.voxels[seedFlat])
+  {
+    return out;
+  }
+  std::vector<long> queue{ seedFlat };
+  out.voxels[seedFlat] = 1;
+  Flood(mask, 1, queue, out.voxels);
+  return out;
+}
+
+std::vector<int> LabelComponents(const MaskGrid& mask, std::vector<long>& sizes)
+{
+  std::vector<int> labels(mask.voxels.size(), 0);
+  sizes.clear();
+  std::vector<long> queue;
+  for (long flat = 0; flat < mask.Count(); ++flat)
+  {
+    if (!mask.voxels[flat] || labels[flat])
+      continue;
+    const int label = static_cast<int>(sizes.size()) + 1;
+    queue.assign(1, flat);
+    labels[flat] = label;
+    for (std::size_t head = 0; head < queue.size(); ++head)
+    {
+      const std::array<long, 3> ijk = mask.Ijk(queue[head]);
+      for (const FaceStep& step : faceSteps)
+      {
+        const long n = FaceNeighbour(mask, ijk, step);
+        if (n >= 0 && mask.voxels[n] && !labels[n])
+        {
+          labels[n] = label;
+          queue.push_back(n);
+        }
+      }
+    }
+    sizes.push_back(static_cast<long>(queue.size()));
+  }
+  return labels;
+}
+
+void FillHoles(MaskGrid& mask)
+{
+  // Flood the outside from a one-voxel shell of background around the box. In the padded grid
+  // every voxel of the box has all six neighbours, so a step is a flat offset with no bounds
+  // check (a step that wraps across a row only ever joins shell voxels, which are all outside).
+  const long px = mask.size[0] + 2, py = mask.size[1] + 2, pz = mask.size[2] + 2;
+  const long count = px * py * pz;
+  enum : std::uint8_t
+  {
+    Unreached = 0,
+    Foreground = 1,
+    Outside = 2
+  };
+  std::vector<std::uint8_t> state(static_cast<std::size_t>(count), Unreached);
+  for (long k = 0; k < mask.size[2]; ++k)
+    for (long j = 0; j < mask.size[1]; ++j)
+    {
+      const long row = mask.Flat(0, j, k), padded = 1 + px * ((j + 1) + py * (k + 1));
+      for (long i = 0; i < mask.size[0]; ++i)
+        state[padded + i] = mask.voxels[row + i] ? Foreground : Unreached;
+    }
+  const long steps[6] = { 1, -1, px, -px, px * py, -px * py };
+  std::vector<long> stack{ 0 };
+  state[0] = Outside;
+  while (!stack.empty())
+  {
+    const long v = stack.back();
+    stack.pop_back();
+    for (const long step : steps)
+    {
+      const long n = v + step;
+      if (n >= 0 && n < count && state[n] == Unreached)
+      {
+        state[n] = Outside;
+        stack.push_back(n);
+      }
+    }
+  }
+  for (long k = 0; k < mask.size[2]; ++k)
+    for (long j = 0; j < mask.size[1]; ++j)
+    {
+      const long row = mask.Flat(0, j, k), padded = 1 + px * ((j + 1) + py * (k + 1));
+      for (long i = 0; i < mask.size[0]; ++i)
+        if (state[padded + i] == Unreached)
+          mask.voxels[row + i] = 1;
+    }
+}
+
+void FillSurfacePits(MaskGrid& mask, int minimumFaceNeighbours)
+{
+  std::vector<long> pits;
+  for (long flat = 0; flat < mask.Count(); ++flat)
+  {
+    if (mask.voxels[flat])
+      continue;
+    const std::array<long, 3> ijk = mask.Ijk(flat);
+    int neighbours = 0;
+    for (const FaceStep& step : faceSteps)
+    {
+      const long n = FaceNeighbour(mask, ijk, step);
+      neighbours += n >= 0 && mask.voxels[n];
+    }
+    if (neighbours >= minimumFaceNeighbours)
+      pits.push_back(flat);
+  }
+  for (const long flat : pits)
+    mask.voxels[flat] = 1;
+}
+
+void GrowConstrained(MaskGrid& mask, const std::vector<bool>& accept, int steps)
+{
+  std::vector<long> front;
+  for (long flat = 0; flat < mask.Count(); ++flat)
+  {
+    if (mask.voxels[flat])
+    {
+      front.push_back(flat);
+    }
+  }
+  std::vector<long> next;
+  for (int step = 0; step < steps && !front.empty(); ++step)
+  {
+    next.clear();
+    for (const long flat : front)
+    {
+      const std::array<long, 3> ijk = mask.Ijk(flat);
+      for (const FaceStep& faceStep : faceSteps)
+      {
+        const long n = FaceNeighbour(mask, ijk, faceStep);
+        if (n >= 0 && !mask.voxels[n] && accept[n])
+        {
+          mask.voxels[n] = 1;
+          next.push_back(n);
+        }
+      }
+    }
+    front.swap(next);
+  }
+}
+
+} // namespace sgp

@@ -1,0 +1,175 @@
+#include "Device/FitCheck.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "Common/Errors.h"
+#include "Common/Format.h"
+#include "Common/Median.h"
+#include "Device/SelectDevice.h"
+
+namespace sgp
+{
+namespace
+{
+
+constexpr double landingZoneMm = 15.0; ///< as MeasureAnatomy's (e)/(f)
+
+/// Whether ring k of a segment seals.
+bool RingSeals(const StentMesh& mesh, int seg, int k, const Eigen::VectorXi& sealing, double fraction)
+{
+  int touching = 0;
+  for (int j = 0; j < mesh.verticesPerRing; ++j)
+    touching += sealing[mesh.Id(seg, k, j)];
+  return touching >= fraction * mesh.verticesPerRing;
+}
+
+std::string Percent(double value)
+{
+  return FormatNumber(value) + " %";
+}
+
+} // namespace
+
+std::string FitCheck::CoveredOstia() const
+{
+  std::string names;
+  for (const OstiumCoverage& o : ostia)
+    if (o.covered)
+      names += (names.empty() ? "" : ", ") + o.branch;
+  return names.empty() ? "none" : names;
+}
+
+FitCheck CheckGraftFit(const StentMesh& mesh,
+                       const Points& V,
+                       const Eigen::VectorXd& wallDistanceMm,
+                       const Measurements& measured,
+                       const CenterlineTree& tree,
+                       const std::array<double, 3>& graft,
+                       const FitCheckParams& p)
+{
+  const Eigen::Index n = mesh.V.rows();
+  if (V.rows() != n || wallDistanceMm.size() != n)
+    throw InputError("The simulated graft has " + std::to_string(V.rows()) + " vertices and " +
+                     std::to_string(wallDistanceMm.size()) + " wall distances; expected the mesh's " +
+                     std::to_string(n) + ".");
+  for (int seg = 0; seg < 3; ++seg)
+    if (measured.profiles[seg].rings.size() != static_cast<std::size_t>(mesh.RingsIn(seg)))
+      throw InputError("The measurements have " + std::to_string(measured.profiles[seg].rings.size()) +
+                       " rings on segment " + std::to_string(seg) + "; expected the mesh's " +
+                       std::to_string(mesh.RingsIn(seg)) + " (measure and simulate the same mesh).");
+  FitCheck c;
+  c.oversizingPercent.resize(n);
+  c.appositionMm.resize(n);
+  c.sealing.resize(n);
+  for (Eigen::Index v = 0; v < n; ++v)
+  {
+    const int seg = mesh.segment[v], k = mesh.ring[v];
+    const double vessel = measured.profiles[seg].rings[k].meanMm;
+    c.oversizingPercent[v] = OversizingPercent(graft[seg], vessel);
+    c.appositionMm[v] = std::max(0.0, -wallDistanceMm[v]);
+    c.sealing[v] = c.appositionMm[v] <= p.contactToleranceMm ? 1 : 0;
+  }
+
+  // Seal zones.
+  const auto& trunkS = mesh.ringAbscissaMm[TrunkSegment];
+  int k = 0;
+  while (k < mesh.RingsIn(TrunkSegment) && RingSeals(mesh, TrunkSegment, k, c.sealing, p.sealedRingFraction))
+    ++k;
+  c.proximalSealLengthMm = k == 0 ? 0.0 : trunkS[std::min(k, mesh.RingsIn(TrunkSegment) - 1)] - trunkS[0];
+  double* iliacSeal[2] = { &c.rightIliacSealLengthMm, &c.leftIliacSealLengthMm };
+  double* limbOversizing[2] = { &c.rightLimbOversizingPercent, &c.leftLimbOversizingPercent };
+  for (int side = 0; side < 2; ++side)
+  {
+    const int seg = 1 + side, last = mesh.RingsIn(seg) - 1;
+    const auto& s = mesh.ringAbscissaMm[seg];
+    int m = last;
+    while (m >= 0 && RingSeals(mesh, seg, m, c.sealing, p.sealedRingFraction))
+      --m;
+    *iliacSeal[side] = m == last ? 0.0 : s[last] - s[std::max(m, 0)];
+    std::vector<double> zone;
+    for (int r = 0; r <= last; ++r)
+      if (s[r] >= s[last] - landingZoneMm - 1e-9)
+        zone.push_back(OversizingPercent(graft[seg], measured.profiles[seg].rings[r].meanMm));
+    *limbOversizing[side] = Median(zone);
+  }
+  c.proximalOversizingPercent = OversizingPercent(graft[TrunkSegment], measured.profiles[TrunkSegment].rings[0].meanMm);
+
+  // Ostia under the graft.
+  const struct
+  {
+    const char* branch;
+    const Centerline* parent;
+    int segment;
+  } branches[] = { { "rightRenal", &tree.aorta, TrunkSegment },
+                   { "leftRenal", &tree.aorta, TrunkSegment },
+                   { "superiorMesenteric", &tree.aorta, TrunkSegment },
+                   { "coeliac", &tree.aorta, TrunkSegment },
+                   { "rightInternalIliac", &tree.rightIliac, RightLegSegment },
+                   { "leftInternalIliac", &tree.leftIliac, LeftLegSegment } };
+  for (const auto& b : branches)
+  {
+    const Centerline* branch = tree.FindVessel(b.branch);
+    if (!branch || branch->Size() < 2)
+      continue;
+    const BranchOstium ostium = FindBranchOstium(*b.parent, *branch);
+    if (!ostium.found)
+      continue;
+    const auto& s = mesh.ringAbscissaMm[b.segment];
+    OstiumCoverage o{ b.branch, b.parent->name, ostium.upperAbscissaMm, ostium.lowerAbscissaMm };
+    o.overlapMm = std::min(s.back(), ostium.lowerAbscissaMm) - std::max(s.front(), ostium.upperAbscissaMm);
+    o.covered = o.overlapMm > p.ostiumOverlapToleranceMm;
+    c.ostia.push_back(o);
+  }
+
+  // Findings.
+  const auto outside = [&](double percent)
+  { return percent < p.oversizingMinPercent || percent > p.oversizingMaxPercent; };
+  const std::string range =
+    FormatNumber(p.oversizingMinPercent, 0) + "–" + FormatNumber(p.oversizingMaxPercent, 0) + " %";
+  if (outside(c.proximalOversizingPercent))
+    c.findings.push_back("proximal oversizing " + Percent(c.proximalOversizingPercent) + " outside " + range);
+  const char* sides[2] = { "right", "left" };
+  for (int side = 0; side < 2; ++side)
+    if (outside(*limbOversizing[side]))
+      c.findings.push_back(std::string(sides[side]) + " limb oversizing " + Percent(*limbOversizing[side]) +
+                           " outside " + range);
+  if (c.proximalSealLengthMm < p.minimumProximalSealMm)
+  {
+    c.migrationRisk = true;
+    c.findings.push_back("proximal seal zone " + FormatNumber(c.proximalSealLengthMm) + " mm, needs ≥ " +
+                         FormatNumber(p.minimumProximalSealMm, 0) + " mm: risk of migration and type Ia endoleak");
+  }
+  for (int side = 0; side < 2; ++side)
+    if (*iliacSeal[side] < p.minimumIliacSealMm)
+      c.findings.push_back(std::string(sides[side]) + " iliac seal zone " + FormatNumber(*iliacSeal[side]) +
+                           " mm, needs ≥ " + FormatNumber(p.minimumIliacSealMm, 0) + " mm: risk of type Ib endoleak");
+  for (const OstiumCoverage& o : c.ostia)
+    if (o.covered)
+      c.findings.push_back(o.branch + " ostium covered by the graft (" + FormatNumber(o.overlapMm) + " mm)");
+  return c;
+}
+
+std::vector<Measurement> FitCheckRows(const FitCheck& c, const StentMesh& mesh)
+{
+  const double top = mesh.ringAbscissaMm[TrunkSegment].front();
+  return {
+    { "proximalSealLength", c.proximalSealLengthMm, "mm",
+      "simulated graft: length from its top down to the first ring not in contact with the wall", "aorta", top },
+    { "rightIliacSealLength", c.rightIliacSealLengthMm, "mm",
+      "simulated graft: length from the right leg's distal end up to the first ring not in contact", "rightIliac",
+      mesh.ringAbscissaMm[RightLegSegment].back() },
+    { "leftIliacSealLength", c.leftIliacSealLengthMm, "mm",
+      "simulated graft: length from the left leg's distal end up to the first ring not in contact", "leftIliac",
+      mesh.ringAbscissaMm[LeftLegSegment].back() },
+    { "proximalOversizing", c.proximalOversizingPercent, "%", "main body diameter over (a), minus 1", "aorta", top },
+    { "rightLimbOversizing", c.rightLimbOversizingPercent, "%",
+      "right limb diameter over the common iliac's landing zone diameter, minus 1", "rightIliac",
+      mesh.ringAbscissaMm[RightLegSegment].back() },
+    { "leftLimbOversizing", c.leftLimbOversizingPercent, "%",
+      "left limb diameter over the common iliac's landing zone diameter, minus 1", "leftIliac",
+      mesh.ringAbscissaMm[LeftLegSegment].back() },
+  };
+}
+
+} // namespace sgp

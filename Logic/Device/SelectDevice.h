@@ -1,0 +1,152 @@
+/// \file SelectDevice.h
+/// Device selection for EVAR: per catalogue family, the main body and limbs that give the
+/// wanted oversizing, the IFU check of the measured anatomy, and the recommended device.
+///
+/// **Sizing.** Oversizing = (device diameter / vessel diameter − 1) × 100 %. For each family the
+/// main body is the catalogue size whose oversizing of the proximal neck diameter is nearest the
+/// target — the middle of [proximalOversizingMinPercent, proximalOversizingMaxPercent] (15 % by
+/// default) — among the sizes inside that range (limits inclusive, to 1e-9 %); a tie goes to the
+/// smaller size. Each limb is chosen likewise for its common iliac diameter within the limb
+/// range (target 17.5 % by default). No size inside the range: none is chosen, and the sizing
+/// check fails naming the nearest size.
+///
+/// **IFU check** (evar-sizing.md §2.5), each a CriterionCheck (pass / fail / indeterminate when
+/// a measurement it needs is NaN, with signed margin), in this order and with these names:
+///   "main body oversizing", "neck diameter", "neck diameter 15 mm below" (the IFU range holds
+///   along the seal zone), "neck length" (the tier admitting β; with β unmeasured it passes
+///   above every tier, fails below every tier, else is indeterminate), "neck angle β" (≤ the
+///   largest tier angle), "neck angle α" (only for families that limit it), then per side
+///   ("right …", "left …"): "iliac diameter", "limb oversizing", "iliac seal length"; then
+///   "main-body access" (the main body goes up the side with the wider access vessel: its
+///   minimum diameter ≥ profile / 3 mm, with the chosen body's profile or, with none chosen,
+///   the family's largest), "contralateral access" (the other side, the contralateral limb's
+///   profile or the largest limb profile), and "proximal site to bifurcation" (≥ the shortest
+///   main body length to the flow divider; only for families whose catalogue gives it).
+///
+/// **Recommendation.** Among families with no failing check, those with no indeterminate check
+/// come first; within that group the family whose main-body oversizing is nearest the target
+/// (a family without a chosen body last; ties in catalogue order). None: "no device within
+/// IFU", and `reasons` lists every failing check of every family. A forced device (--device
+/// "Family" or "Family:diameter") is the only family evaluated and is the recommendation, its
+/// main body that diameter (its oversizing check fails if outside the range), flagged when it
+/// is outside IFU.
+///
+/// Inputs: SizingAnatomy (mm, degrees; NaN = not measured), DeviceCatalog (validated),
+/// DeviceSelectionParams. Output: DeviceSelection. Pure: no I/O, deterministic.
+/// \throws InputError for parameters out of range (ValidateDeviceSelectionParams), a negative,
+///         zero or infinite measurement (ValidateSizingAnatomy), an invalid catalogue
+///         (ValidateDeviceCatalog), or a forced device that the catalogue does not hold (the
+///         message names the catalogue and lists the families or sizes it does hold).
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "Device/CriterionCheck.h"
+#include "Device/DeviceCatalog.h"
+#include "Measurement/MeasureAnatomy.h"
+
+namespace sgp
+{
+
+/// The measurements that sizing needs, outer wall to outer wall where the IFU says so (the
+/// caller states which diameter definition it passes). Each NaN when not measured.
+struct SizingAnatomy
+{
+  static constexpr double NotMeasured = std::numeric_limits<double>::quiet_NaN();
+  double proximalNeckDiameterMm = NotMeasured;            ///< (a) at the proximal implantation site, > 0
+  double neckDiameter15mmMm = NotMeasured;                ///< (b) 15 mm below it, > 0
+  double proximalNeckLengthMm = NotMeasured;              ///< from the lowest renal to the aneurysm onset, ≥ 0
+  double neckAngleBetaDeg = NotMeasured;                  ///< infrarenal neck vs aneurysm long axis, [0, 180]
+  double neckAngleAlphaDeg = NotMeasured;                 ///< suprarenal aorta vs neck axis, [0, 180]
+  double rightIliacDiameterMm = NotMeasured;              ///< (e) common iliac at the limb's seal, > 0
+  double leftIliacDiameterMm = NotMeasured;               ///< (f), > 0
+  double rightIliacSealLengthMm = NotMeasured;            ///< common iliac length available for the seal, ≥ 0
+  double leftIliacSealLengthMm = NotMeasured;             ///< ≥ 0
+  double rightAccessMinDiameterMm = NotMeasured;          ///< minimum external iliac lumen diameter, > 0
+  double leftAccessMinDiameterMm = NotMeasured;           ///< > 0
+  double proximalSiteToBifurcationLengthMm = NotMeasured; ///< along the centerline, ≥ 0
+};
+
+struct DeviceSelectionParams
+{
+  double proximalOversizingMinPercent = 10.0; ///< in [0, 100], ≤ max
+  double proximalOversizingMaxPercent = 20.0; ///< in [0, 100]
+  double limbOversizingMinPercent = 10.0;     ///< in [0, 100], ≤ max
+  double limbOversizingMaxPercent = 25.0;     ///< in [0, 100]
+  /// Empty: evaluate every family. "Family" (case-insensitive) or "Family:diameter" (mm, one of
+  /// the family's main-body diameters to within 0.05 mm).
+  std::string forcedDevice;
+};
+
+/// One chosen catalogue size, or none.
+struct SizeChoice
+{
+  double diameterMm = std::numeric_limits<double>::quiet_NaN(); ///< NaN: none chosen
+  double oversizingPercent = std::numeric_limits<double>::quiet_NaN();
+  double profileFr = std::numeric_limits<double>::quiet_NaN();
+  bool forced = false;
+  std::string reason; ///< why none was chosen; empty when one was
+  bool Chosen() const { return !std::isnan(diameterMm); }
+};
+
+struct FamilyEvaluation
+{
+  std::string family;   ///< the catalogue's name
+  int catalogIndex = 0; ///< index into DeviceCatalog::families
+  SizeChoice mainBody;
+  SizeChoice rightLimb;
+  SizeChoice leftLimb;
+  std::string mainBodyAccessSide; ///< "right", "left", or "" when neither access was measured
+  std::vector<CriterionCheck> checks;
+  int Count(CheckStatus status) const;
+  bool WithinIfu() const { return Count(CheckStatus::Fail) == 0; }
+};
+
+struct DeviceSelection
+{
+  std::vector<FamilyEvaluation> families; ///< catalogue order; only the forced one when forced
+  int recommended = -1;                   ///< index into `families`; −1: no device within IFU
+  bool forced = false;
+  bool recommendedWithinIfu = false;    ///< no failing check
+  bool recommendedFullyChecked = false; ///< and no indeterminate check
+  double proximalTargetPercent = 0.0;
+  double limbTargetPercent = 0.0;
+  /// One line, e.g. "Endurant II: main body 25 mm (13.6 %), right limb 16 mm (14.3 %), left
+  /// limb 16 mm (14.3 %); within IFU", or "no device within IFU".
+  std::string summary;
+  /// No recommendation: every failing check of every family ("<family>: <check text>"). A
+  /// recommendation outside IFU or not fully checked: its failing and indeterminate checks.
+  std::vector<std::string> reasons;
+};
+
+/// The sizing inputs from the measurement stage (MeasureAnatomy.h; lumen diameters): (a), (b),
+/// neck length, β, α, (e), (f), access minimum diameters, site to bifurcation; each iliac's seal
+/// length is its common iliac length, bifurcation to internal iliac origin — the most a limb can
+/// seal in. A value the stage could not measure stays NaN.
+SizingAnatomy SizingFromMeasurements(const Measurements& measurements);
+
+/// (deviceDiameterMm / vesselDiameterMm − 1) × 100.
+double OversizingPercent(double deviceDiameterMm, double vesselDiameterMm);
+
+/// The size of `sizes` (ascending) nearest the middle of [minPercent, maxPercent] among those
+/// inside it, as described above; `vesselDiameterMm` NaN or no size inside: none, with reason.
+SizeChoice ChooseDeviceSize(const std::vector<DeviceSize>& sizes,
+                            double vesselDiameterMm,
+                            double minPercent,
+                            double maxPercent);
+
+/// \throws InputError "<name> is <value> %; expected 0.0 to 100.0 %." or min > max.
+void ValidateDeviceSelectionParams(const DeviceSelectionParams& params);
+
+/// \throws InputError "<field> is <value> <unit>; expected …" for a measurement that is not NaN
+///         and not in its documented range.
+void ValidateSizingAnatomy(const SizingAnatomy& anatomy);
+
+DeviceSelection SelectDevice(const SizingAnatomy& anatomy,
+                             const DeviceCatalog& catalog,
+                             const DeviceSelectionParams& params = {});
+
+} // namespace sgp

@@ -1,0 +1,128 @@
+#include "IO/WritePlanOutputs.h"
+
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "IO/DeviceSelectionToJson.h"
+#include "IO/WriteCenterlines.h"
+#include "IO/WriteMeasurements.h"
+#include "IO/WriteReturnParameters.h"
+#include "IO/WriteStentModel.h"
+#include "IO/WriteTextFile.h"
+#include "Pipeline/PlanValues.h"
+
+namespace sgp
+{
+namespace
+{
+
+void Require(const RepairPlan& plan, PlanStage stage, const char* output)
+{
+  if (!plan.Reached(stage))
+    throw std::logic_error(std::string("WritePlanOutputs: ") + output + " was asked for, but the plan stopped earlier");
+}
+
+nlohmann::json PlanReportJson(const RepairPlan& plan, const PlanRunInfo& run)
+{
+  nlohmann::json report = MeasurementsToJson(plan.measurements);
+  report["format"] = "StentGraftPlanner.report/1";
+  report["notes"] = { "Diameters are lumen diameters (wall to wall of the contrast-filled lumen); instructions for "
+                      "use give outer-wall diameters, so sizes are under-called where there is thrombus or a thick "
+                      "wall.",
+                      "Device figures come from the catalogue " + run.deviceCatalog +
+                        ": public defaults, verify them against the current instructions for use." };
+  report["device"] = DeviceSelectionToJson(plan.selection);
+  report["device"]["simulated"] =
+    plan.HasGraft() ? nlohmann::json(plan.selection.families[plan.simulatedFamily].family) : nlohmann::json(nullptr);
+  report["fitCheck"] = plan.HasGraft() ? FitCheckToJson(plan.fitCheck) : nlohmann::json(nullptr);
+  report["run"] = { { "inputVolume", run.inputVolume },
+                    { "lumenVolumeMl", plan.lumen.volumeMl },
+                    { "acmIterations", plan.fit.iterations },
+                    { "acmConverged", plan.fit.converged } };
+  return report;
+}
+
+} // namespace
+
+PlanRequest PlanRequestFor(const PlanOutputPaths& paths)
+{
+  PlanRequest request;
+  if (!paths.returnParameterFile.empty() || !paths.simulatedStentModel.empty() || !paths.report.empty() ||
+      !paths.measurements.empty())
+    request.through = PlanStage::Device;
+  else if (!paths.diameterProfile.empty())
+    request.through = PlanStage::Measurements;
+  else if (!paths.stentModel.empty() || !paths.initialStentModel.empty())
+    request.through = PlanStage::StentSurface;
+  else if (!paths.centerlines.empty() || !paths.landmarks.empty())
+    request.through = PlanStage::Centerlines;
+  else
+    request.through = PlanStage::Segmentation;
+  request.initialSurfaceValues = !paths.initialStentModel.empty();
+  request.requireSimulatedGraft = !paths.simulatedStentModel.empty();
+  return request;
+}
+
+void WritePlanOutputs(const RepairPlan& plan,
+                      const PlanOutputPaths& paths,
+                      const PlanRunInfo& run,
+                      OutputTransaction& outputs)
+{
+  if (!paths.centerlines.empty())
+  {
+    Require(plan, PlanStage::Centerlines, "outputCenterlines");
+    WriteCenterlines(plan.centerlines, outputs.Stage(paths.centerlines));
+  }
+  if (!paths.landmarks.empty())
+  {
+    Require(plan, PlanStage::Centerlines, "outputLandmarks");
+    WriteLandmarks(plan.centerlines, outputs.Stage(paths.landmarks));
+  }
+  if (!paths.initialStentModel.empty())
+  {
+    Require(plan, PlanStage::StentSurface, "outputInitialStentModel");
+    WriteStentModel(plan.mesh, plan.mesh.V, plan.initialRadiusMm, plan.initialWallDistanceMm,
+                    outputs.Stage(paths.initialStentModel));
+  }
+  if (!paths.stentModel.empty())
+  {
+    Require(plan, PlanStage::StentSurface, "outputStentModel");
+    WriteStentModel(plan.mesh, plan.fit.V, plan.fit.radiusMm, plan.fit.wallDistanceMm, outputs.Stage(paths.stentModel));
+  }
+  if (!paths.measurements.empty())
+  {
+    Require(plan, PlanStage::Device, "outputMeasurements");
+    WriteMeasurementsTable(plan.rows, outputs.Stage(paths.measurements));
+  }
+  if (!paths.simulatedStentModel.empty())
+  {
+    Require(plan, PlanStage::Device, "outputSimulatedStentModel");
+    if (!plan.HasGraft())
+      throw std::logic_error("WritePlanOutputs: outputSimulatedStentModel was asked for, but no graft was simulated");
+    WriteStentModel(plan.mesh, plan.graft.V, plan.graft.radiusMm, plan.graft.wallDistanceMm,
+                    { { "Oversizing", plan.fitCheck.oversizingPercent },
+                      { "Apposition", plan.fitCheck.appositionMm },
+                      { "Sealing", plan.fitCheck.sealing.cast<double>() } },
+                    outputs.Stage(paths.simulatedStentModel));
+  }
+  if (!paths.diameterProfile.empty())
+  {
+    Require(plan, PlanStage::Measurements, "outputDiameterProfile");
+    WriteDiameterProfiles(plan.measurements, outputs.Stage(paths.diameterProfile));
+  }
+  if (!paths.report.empty())
+  {
+    Require(plan, PlanStage::Device, "outputReport");
+    WriteTextFile(PlanReportJson(plan, run).dump(2) + "\n", outputs.Stage(paths.report), "planning report");
+  }
+  if (!paths.returnParameterFile.empty())
+  {
+    ReturnValues values;
+    for (const PlanValue& v : PlanReturnValues(plan))
+      values.emplace_back(v.name, v.text);
+    WriteReturnParameters(values, outputs.Stage(paths.returnParameterFile));
+  }
+}
+
+} // namespace sgp

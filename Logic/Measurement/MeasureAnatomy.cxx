@@ -1,0 +1,328 @@
+#include "Measurement/MeasureAnatomy.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Dense>
+
+#include "Centerlines/VesselOrigins.h"
+#include "Common/Format.h"
+#include "Common/Median.h"
+
+namespace sgp
+{
+namespace
+{
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+constexpr double radiansToDegrees = 57.29577951308232;
+constexpr double neckDilationFactor = 1.10;    ///< the neck ends where the diameter exceeds (a) by 10 %
+constexpr double secondDiameterDepthMm = 15.0; ///< (b), paper section 2.2
+constexpr double landingZoneMm = 15.0;         ///< distal iliac landing zone for (e)/(f)
+
+double AngleDeg(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+  return std::atan2(a.cross(b).norm(), a.dot(b)) * radiansToDegrees;
+}
+
+Measurement Diameter(const std::string& name,
+                     const RingDiameters& ring,
+                     const std::string& vessel,
+                     const std::string& definition)
+{
+  Measurement m{ name, ring.meanMm, "mm", definition, vessel, ring.abscissaMm };
+  m.minMm = ring.minMm;
+  m.maxMm = ring.maxMm;
+  m.areaMm = ring.areaMm;
+  return m;
+}
+
+const char* Side(int side)
+{
+  return side == 0 ? "right" : "left";
+}
+
+/// A ring whose smallest diameter is under half its mean has folded or cut the wall obliquely:
+/// its mean is not a diameter of the vessel.
+bool Distorted(const RingDiameters& r)
+{
+  return r.minMm < 0.5 * r.meanMm;
+}
+
+/// What every step of MeasureAnatomy reads: the inputs, the profiles and the landmarks found so far.
+struct MeasureContext
+{
+  const CenterlineTree& tree;
+  const ProximalSite& site;
+  const Centerline* iliac[2];
+  const DiameterProfile& trunk;
+  Point3 B;                        ///< the aortic bifurcation, LPS mm
+  double sSite = nan, sBif = nan;  ///< along the aorta, mm
+  double internalIliacAbscissa[2]; ///< along each iliac, mm (NaN: none found)
+};
+
+/// (a) at the site and (b) 15 mm below it; returns both rings.
+std::pair<RingDiameters, RingDiameters> MeasureNeckDiameters(const MeasureContext& c, Measurements& out)
+{
+  const DiameterProfile& trunk = c.trunk;
+  if (!trunk.rings.empty() && trunk.rings.front().abscissaMm > c.sSite + 1.0)
+    out.warnings.push_back(
+      "The fitted trunk starts " + FormatNumber(trunk.rings.front().abscissaMm - c.sSite) +
+      " mm below the proximal implantation site (proximalStartMm); (a) is read at its first ring.");
+  const RingDiameters a = trunk.At(c.sSite);
+  out.values.push_back(Diameter("proximalNeckDiameter", a, "aorta",
+                                "(a) mean ring diameter of the fitted surface at the proximal implantation site (" +
+                                  std::string(ToString(c.site.source)) + "), lumen"));
+  const RingDiameters b = trunk.At(c.sSite + secondDiameterDepthMm);
+  out.values.push_back(
+    Diameter("neckDiameter15mm", b, "aorta",
+             "(b) mean ring diameter 15 mm below the proximal site along the aortic centerline, lumen"));
+  return { a, b };
+}
+
+/// (c) the widest ring between the site and B, (d) the narrowest below it; returns (c)'s ring index.
+std::size_t MeasureSacDiameters(const MeasureContext& c, Measurements& out)
+{
+  const DiameterProfile& trunk = c.trunk;
+  std::size_t widest = 0;
+  for (std::size_t k = 0; k < trunk.rings.size(); ++k)
+    if (trunk.rings[k].abscissaMm >= c.sSite - 1e-9 && trunk.rings[k].abscissaMm <= c.sBif &&
+        trunk.rings[k].meanMm > trunk.rings[widest].meanMm)
+      widest = k;
+  out.values.push_back(
+    Diameter("maxAneurysmDiameter", trunk.rings[widest], "aorta",
+             "(c) largest mean ring diameter between the proximal site and the aortic bifurcation, lumen"));
+  std::size_t narrowest = widest;
+  for (std::size_t k = widest; k < trunk.rings.size(); ++k)
+    if (trunk.rings[k].meanMm < trunk.rings[narrowest].meanMm)
+      narrowest = k;
+  out.values.push_back(Diameter("distalNeckMinDiameter", trunk.rings[narrowest], "aorta",
+                                "(d) smallest mean ring diameter between (c) and the trunk's last ring (3 stent radii "
+                                "above the flow divider), lumen"));
+  return widest;
+}
+
+/// (e) or (f): the distal landing zone of one leg, from the rings that kept their shape; where the
+/// fit collapsed there (a tortuous iliac can fold the rings), the centerline's inscribed diameter
+/// instead, with a warning.
+void MeasureIliacLandingZone(const MeasureContext& c, int side, Measurements& out)
+{
+  const DiameterProfile& leg = out.profiles[1 + side];
+  const Centerline& vessel = *c.iliac[side];
+  const double end = leg.rings.back().abscissaMm, start = end - landingZoneMm;
+  std::vector<double> means;
+  int distorted = 0;
+  for (const RingDiameters& r : leg.rings)
+    if (r.abscissaMm >= start - 1e-9)
+    {
+      if (Distorted(r))
+        ++distorted;
+      else
+        means.push_back(r.meanMm);
+    }
+  RingDiameters zone = leg.At(0.5 * (start + end));
+  const std::string name = std::string(Side(side)) + "IliacDiameter";
+  std::string definition = std::string(side == 0 ? "(e)" : "(f)") +
+                           " median mean ring diameter of the common iliac over the leg's distal 15 mm (landing "
+                           "zone ending 5 mm above the internal iliac origin), lumen";
+  if (means.size() >= 2)
+    zone.meanMm = Median(means);
+  else
+  {
+    std::vector<double> inscribed;
+    for (Eigen::Index i = 0; i < vessel.Size(); ++i)
+      if (vessel.abscissaMm[i] >= start - 1e-9 && vessel.abscissaMm[i] <= end + 1e-9)
+        inscribed.push_back(2.0 * vessel.radiusMm[i]);
+    zone.meanMm = inscribed.empty() ? nan : Median(inscribed);
+    zone.minMm = zone.maxMm = zone.areaMm = zone.meanMm;
+    definition += "; the fitted rings there are distorted, so: median inscribed-sphere diameter of the centerline";
+    out.warnings.push_back(std::to_string(distorted) + " of the " + Side(side) +
+                           " leg's rings in its landing zone are distorted (smallest diameter under half the mean: "
+                           "a tortuous iliac?); " +
+                           name + " is the centerline's inscribed diameter there, " + FormatNumber(zone.meanMm) +
+                           " mm.");
+  }
+  out.values.push_back(Diameter(name, zone, leg.vessel, definition));
+}
+
+/// (a)–(d) read one ring each: a warning for each such ring that is distorted.
+void WarnDistortedAorticRings(Measurements& out)
+{
+  for (const Measurement& m : out.values)
+    if (m.vessel == "aorta" && m.minMm < 0.5 * m.value)
+      out.warnings.push_back(m.name + ": the ring at " + FormatNumber(m.abscissaMm) +
+                             " mm along the aorta is distorted (smallest diameter " + FormatNumber(m.minMm) +
+                             " mm, mean " + FormatNumber(m.value) + " mm); check the fit there.");
+}
+
+/// Where the neck ends: the first ring above (c) whose smallest diameter (the minor axis where a
+/// ring cuts a bend obliquely) exceeds (a) by 10 %, linear between rings; NaN with a warning when
+/// none does. Near an angulated neck's bend the mean of a tilted ring grows before the aorta does.
+double FindNeckEnd(const MeasureContext& c, const RingDiameters& a, std::size_t widest, Measurements& out)
+{
+  const DiameterProfile& trunk = c.trunk;
+  for (std::size_t k = 1; k <= widest && k < trunk.rings.size(); ++k)
+  {
+    const RingDiameters &p = trunk.rings[k - 1], &q = trunk.rings[k];
+    const double threshold = neckDilationFactor * a.meanMm;
+    if (q.abscissaMm > c.sSite && q.minMm > threshold)
+    {
+      const double t = q.minMm > p.minMm ? std::clamp((threshold - p.minMm) / (q.minMm - p.minMm), 0.0, 1.0) : 1.0;
+      return std::max(c.sSite, p.abscissaMm + t * (q.abscissaMm - p.abscissaMm));
+    }
+  }
+  out.warnings.push_back("The aorta never widens 10 % beyond (a) below the proximal site; proximalNeckLength is "
+                         "not measured (no aneurysm between the site and the bifurcation?).");
+  return nan;
+}
+
+/// Neck length, site to B, and B to each internal iliac origin; fills `iliacOffset` (B to the
+/// start of each iliac centerline along its first tangent, mm).
+void MeasureLengths(const MeasureContext& c, double sNeckEnd, double iliacOffset[2], Measurements& out)
+{
+  std::vector<Measurement>& v = out.values;
+  v.push_back(
+    { "proximalNeckLength", sNeckEnd - c.sSite, "mm",
+      "proximal site to where the ring's smallest diameter first exceeds (a) by 10 %, along the aortic centerline",
+      "aorta", c.sSite });
+  v.push_back({ "proximalSiteToBifurcationLength", c.sBif - c.sSite, "mm",
+                "proximal site to the aortic bifurcation (where the aortic and common iliac axes meet), along the "
+                "aortic centerline",
+                "aorta", c.sSite });
+  for (int side = 0; side < 2; ++side)
+  {
+    const Point3 start = c.iliac[side]->points.row(0).transpose();
+    iliacOffset[side] = (start - c.B).dot(TangentAt(*c.iliac[side], 0.0));
+    const double length = c.internalIliacAbscissa[side] + iliacOffset[side];
+    if (!std::isfinite(length))
+      out.warnings.push_back(std::string("No ") + Side(side) +
+                             " internal iliac artery was found; the iliac length is not measured.");
+    v.push_back({ std::string(Side(side)) + "IliacLength", length, "mm",
+                  "aortic bifurcation to the internal iliac origin, along the iliac centerline", c.iliac[side]->name,
+                  0.0 });
+  }
+}
+
+/// β (neck against aneurysm axis), α (suprarenal against neck axis) and the neck's conicity.
+void MeasureNeckAngles(const MeasureContext& c,
+                       double sNeckEnd,
+                       const RingDiameters& a,
+                       const RingDiameters& b,
+                       Measurements& out)
+{
+  const Centerline& aorta = c.tree.aorta;
+  const double sSite = c.sSite;
+  const double neckAxisLength =
+    std::max(5.0, std::min(secondDiameterDepthMm, std::isfinite(sNeckEnd) ? sNeckEnd - sSite : secondDiameterDepthMm));
+  const Eigen::Vector3d neckAxis = PositionAt(aorta, sSite + neckAxisLength) - PositionAt(aorta, sSite);
+  double beta = nan;
+  if (std::isfinite(sNeckEnd) && (c.B - PositionAt(aorta, sNeckEnd)).norm() > 10.0)
+    beta = AngleDeg(neckAxis, c.B - PositionAt(aorta, sNeckEnd));
+  out.values.push_back({ "neckAngleBeta", beta, "deg",
+                         "infrarenal angulation: neck axis (chord over the first " + FormatNumber(neckAxisLength) +
+                           " mm below the site) against the aneurysm axis (chord from the neck's end to the "
+                           "bifurcation)",
+                         "aorta", sSite });
+  const double suprarenalLength = std::min(30.0, sSite);
+  double alpha = nan;
+  if (suprarenalLength >= 10.0)
+    alpha = AngleDeg(PositionAt(aorta, sSite) - PositionAt(aorta, sSite - suprarenalLength), neckAxis);
+  else
+    out.warnings.push_back("The scan covers " + FormatNumber(sSite) +
+                           " mm of aorta above the proximal site (at least 10 mm needed); neckAngleAlpha is not "
+                           "measured.");
+  out.values.push_back({ "neckAngleAlpha", alpha, "deg",
+                         "suprarenal angulation: suprarenal axis (chord over " + FormatNumber(suprarenalLength) +
+                           " mm above the site) against the neck axis",
+                         "aorta", sSite - suprarenalLength });
+  out.values.push_back(
+    { "neckConicity", 100.0 * (b.meanMm - a.meanMm) / a.meanMm, "%",
+      "(b − a) / a over the first 15 mm of the neck; positive: the neck widens downward (reverse taper)", "aorta",
+      sSite });
+}
+
+/// Each iliac's tortuosity, then each external iliac's smallest inscribed diameter (access).
+void MeasureIliacAccess(const MeasureContext& c, const double iliacOffset[2], Measurements& out)
+{
+  for (int side = 0; side < 2; ++side)
+  {
+    const Centerline& iliac = *c.iliac[side];
+    const double chord = (iliac.points.row(iliac.Size() - 1).transpose() - c.B).norm();
+    const double length = iliac.LengthMm() + iliacOffset[side];
+    out.values.push_back({ std::string(Side(side)) + "IliacTortuosity", chord > 1.0 ? length / chord : nan, "ratio",
+                           "iliac centerline length / straight distance, from the aortic bifurcation to the "
+                           "centerline's distal end in the scan (1 = straight)",
+                           iliac.name, 0.0 });
+  }
+  for (int side = 0; side < 2; ++side)
+  {
+    const Centerline& iliac = *c.iliac[side];
+    const double from = c.internalIliacAbscissa[side] + 10.0, to = iliac.LengthMm() - 10.0;
+    double smallest = nan, where = nan;
+    if (std::isfinite(from) && to - from >= 10.0)
+      for (Eigen::Index i = 0; i < iliac.Size(); ++i)
+        if (iliac.abscissaMm[i] >= from && iliac.abscissaMm[i] <= to && !(2 * iliac.radiusMm[i] >= smallest))
+        {
+          smallest = 2 * iliac.radiusMm[i];
+          where = iliac.abscissaMm[i];
+        }
+    out.values.push_back({ std::string(Side(side)) + "AccessMinDiameter", smallest, "mm",
+                           "smallest inscribed-sphere diameter of the external iliac, 10 mm below the internal iliac "
+                           "origin to 10 mm before the centerline's end in the scan (the delivery system's path), "
+                           "lumen",
+                           iliac.name, where });
+  }
+}
+
+} // namespace
+
+const Measurement* Measurements::Find(const std::string& name) const
+{
+  for (const Measurement& m : values)
+    if (m.name == name)
+      return &m;
+  return nullptr;
+}
+
+double Measurements::Value(const std::string& name) const
+{
+  const Measurement* m = Find(name);
+  return m ? m->value : nan;
+}
+
+Measurements MeasureAnatomy(const CenterlineTree& tree,
+                            const StentMesh& mesh,
+                            const Points& V,
+                            const ProximalSite& site)
+{
+  Measurements out;
+  out.site = site;
+  out.profiles = MeasureRingDiameters(mesh, V);
+  if (!site.warning.empty())
+    out.warnings.push_back(site.warning);
+  const AorticBifurcation bifurcation = FindAorticBifurcation(tree);
+  out.bifurcationLps = bifurcation.lps;
+  out.bifurcationAbscissaMm = bifurcation.abscissaMm;
+  MeasureContext c{ tree,
+                    site,
+                    { &tree.rightIliac, &tree.leftIliac },
+                    out.profiles[TrunkSegment],
+                    bifurcation.lps,
+                    site.abscissaMm,
+                    bifurcation.abscissaMm,
+                    { InternalIliacOriginAbscissa(tree, 0), InternalIliacOriginAbscissa(tree, 1) } };
+
+  const auto [a, b] = MeasureNeckDiameters(c, out);
+  const std::size_t widest = MeasureSacDiameters(c, out);
+  for (int side = 0; side < 2; ++side)
+    MeasureIliacLandingZone(c, side, out);
+  WarnDistortedAorticRings(out);
+  const double sNeckEnd = FindNeckEnd(c, a, widest, out);
+  double iliacOffset[2];
+  MeasureLengths(c, sNeckEnd, iliacOffset, out);
+  MeasureNeckAngles(c, sNeckEnd, a, b, out);
+  MeasureIliacAccess(c, iliacOffset, out);
+  return out;
+}
+
+} // namespace sgp

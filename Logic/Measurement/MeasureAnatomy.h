@@ -1,0 +1,94 @@
+/// \file MeasureAnatomy.h
+/// The sizing measurements (Egger et al. 2007, section 2.2: diameters (a)–(f)) and the lengths and
+/// angles the devices' instructions for use check (evar-sizing.md §2.1, §2.3–2.5), read off the
+/// stent surface fitted in measure mode and the labelled centerlines.
+///
+/// Definitions (each Measurement carries its own text, which the table and report print):
+///  - **aortic bifurcation** B: the point nearest (least squares) to the axes of the distal aorta
+///    (chord of its centerline 25…5 mm above the skeleton's junction) and of both common iliacs
+///    (chords 10…30 mm below it) — where the vessel axes meet, not where the skeleton's junction
+///    lies (that sits a few mm low, inside the merged cross-section); the junction itself when the
+///    axes do not meet within 10 mm of it. Lengths to B are along the aortic centerline, extended
+///    straight past its end where B lies beyond it.
+///  - diameters are the **mean ring diameter** (MeasureDiameters.h) with min, max and
+///    area-equivalent beside it, lumen wall to lumen wall (not outer wall: thrombus and wall are
+///    not segmented);
+///  - (a) `proximalNeckDiameter` at the proximal site; (b) `neckDiameter15mm` 15 mm below it;
+///    (c) `maxAneurysmDiameter` the largest between the site and B; (d) `distalNeckMinDiameter` the
+///    smallest between (c)'s ring and the trunk's last ring (3 stent radii above the junction, away
+///    from the flow divider); (e)/(f) `rightIliacDiameter`/`leftIliacDiameter` the median over the
+///    leg's rings in its distal 15 mm (the distal landing zone, ending 5 mm above the internal
+///    iliac origin), leaving out distorted rings (smallest diameter under half the mean: the fit
+///    folded there, as in a tortuous iliac) — with fewer than two left, the median
+///    inscribed-sphere diameter of the centerline there, and a warning; a distorted ring under
+///    (a)–(d) gives a warning;
+///  - `proximalNeckLength`: site to where the aorta first exceeds (a) by 10 % (linear between
+///    rings), the usual clinical rule — judged on each ring's smallest diameter, the minor axis
+///    clinicians use in angulated necks, because a ring that cuts a bend obliquely has a larger
+///    mean before the aorta widens; `proximalSiteToBifurcationLength`: site to
+///    B; `rightIliacLength`/`leftIliacLength`: B to the internal iliac origin along the iliac (the
+///    origin found like B: where the common, external and internal iliac axes meet);
+///  - `neckAngleBeta`: between the neck axis (chord over the first min(15 mm, neck length, ≥ 5 mm)
+///    below the site) and the aneurysm axis (chord from the neck's end to B); `neckAngleAlpha`:
+///    between the suprarenal axis (chord over up to 30 mm above the site, at least 10 mm) and the
+///    neck axis — NaN when the scan covers less; `neckConicity`: (b − a)/a in % (positive: the
+///    neck widens downward); `rightIliacTortuosity`/`leftIliacTortuosity`: centerline length /
+///    straight distance from B to the iliac centerline's distal end in the scan (1 = straight);
+///  - `rightAccessMinDiameter`/`leftAccessMinDiameter`: the smallest inscribed-sphere diameter
+///    along the external iliac from 10 mm below the internal iliac origin to 10 mm before the
+///    centerline's end (the delivery system's path), NaN when that stretch is shorter than 10 mm.
+///
+/// A value that cannot be measured is NaN and its absence is explained in `warnings`.
+/// Input: the labelled CenterlineTree, the StentMesh, the fitted surface V (#V×3), and the
+/// ProximalSite (all LPS mm). Output: Measurements, mm / degrees / % / ratio.
+/// Errors: InputError when V does not match the mesh.
+#pragma once
+
+#include <array>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "Centerlines/Centerlines.h"
+#include "Centerlines/ProximalSite.h"
+#include "Measurement/MeasureDiameters.h"
+#include "Stent/StentMesh.h"
+
+namespace sgp
+{
+
+struct Measurement
+{
+  std::string name; ///< lowerCamelCase, the SEM return parameter's name
+  double value = std::numeric_limits<double>::quiet_NaN();
+  std::string unit;       ///< mm, deg, %, ratio
+  std::string definition; ///< how it was measured, one sentence
+  std::string vessel;     ///< the centerline it was measured on
+  double abscissaMm =
+    std::numeric_limits<double>::quiet_NaN();              ///< where on it (diameters: the ring; lengths/angles: start)
+  double minMm = std::numeric_limits<double>::quiet_NaN(); ///< diameters: the ring's smallest diameter
+  double maxMm = std::numeric_limits<double>::quiet_NaN(); ///< diameters: the ring's largest diameter
+  double areaMm = std::numeric_limits<double>::quiet_NaN(); ///< diameters: area-equivalent diameter
+};
+
+struct Measurements
+{
+  ProximalSite site;
+  Point3 bifurcationLps = Point3::Zero();
+  double bifurcationAbscissaMm = 0.0; ///< along the aorta from its top
+  std::vector<Measurement> values;    ///< in the order of the file comment
+  std::array<DiameterProfile, 3> profiles;
+  std::vector<std::string> warnings;
+  /// The measurement called `name`, or nullptr.
+  const Measurement* Find(const std::string& name) const;
+  /// Its value, NaN when absent or not measured.
+  double Value(const std::string& name) const;
+};
+
+/// See the file comment.
+Measurements MeasureAnatomy(const CenterlineTree& tree,
+                            const StentMesh& mesh,
+                            const Points& V,
+                            const ProximalSite& site);
+
+} // namespace sgp

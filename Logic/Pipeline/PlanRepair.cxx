@@ -1,0 +1,224 @@
+#include "Pipeline/PlanRepair.h"
+
+#include <utility>
+
+#include "Centerlines/AssignInscribedRadii.h"
+#include "Centerlines/ThinLabelMap.h"
+#include "Common/Errors.h"
+#include "Common/Format.h"
+#include "Stent/WallDistanceField.h"
+
+namespace sgp
+{
+namespace
+{
+
+/// The observer, and the plan's warnings list that every warning also goes to.
+class StageReporter
+{
+public:
+  StageReporter(const PlanObserver& observer, RepairPlan& plan)
+    : m_Observer(observer)
+    , m_Plan(plan)
+  {
+  }
+  void Begin(std::string_view name, std::string_view description) const
+  {
+    if (m_Observer.begin)
+      m_Observer.begin(name, description);
+  }
+  void Progress(double fraction) const { ReportProgress(m_Observer.progress, fraction, ""); }
+  const ProgressCallback& Callback() const { return m_Observer.progress; }
+  void Warn(const std::string& warning) const
+  {
+    m_Plan.warnings.push_back(warning);
+    if (m_Observer.warn)
+      m_Observer.warn(warning);
+  }
+
+  void LumenReady(const LumenSegmentation& lumen) const
+  {
+    if (m_Observer.lumenReady)
+      m_Observer.lumenReady(lumen);
+  }
+
+private:
+  const PlanObserver& m_Observer;
+  RepairPlan& m_Plan;
+};
+
+void SegmentLumen(const CtImage& ct,
+                  const Point3& seedLps,
+                  const PlanParams& params,
+                  const StageReporter& report,
+                  RepairPlan& plan)
+{
+  report.Begin("SegmentLumen", "Segmenting the aortic lumen by region growing");
+  plan.lumen = GrowLumenRegion(ct, seedLps, params.growing, report.Callback());
+  for (const std::string& w : plan.lumen.warnings)
+    report.Warn(w);
+  report.LumenReady(plan.lumen);
+}
+
+void ExtractCenterlines(const PlanParams& params, const StageReporter& report, RepairPlan& plan)
+{
+  report.Begin("ThinLumen", "Thinning the lumen into its skeleton");
+  const Skeleton skeleton = ThinLabelMap(*plan.lumen.mask, report.Callback());
+  report.Begin("ExtractCenterlines", "Labelling the aorta, the iliac arteries and their branches");
+  const SkeletonGraph graph = BuildSkeletonGraph(skeleton, *plan.lumen.mask, params.graph);
+  report.Progress(0.3);
+  plan.centerlines = LabelAortoIliacTree(graph, params.centerlines);
+  AssignInscribedRadii(plan.centerlines, skeleton);
+}
+
+/// The proximal site, the mesh, the wall field and the fit in acmMode; returns the wall field,
+/// which the later fits share.
+WallDistanceField FitStentSurface(const PlanRequest& request,
+                                  const PlanParams& params,
+                                  const StageReporter& report,
+                                  RepairPlan& plan)
+{
+  report.Begin("FitStent", "Fitting the bifurcated stent surface (active contour)");
+  plan.site = FindProximalSite(plan.centerlines, request.lowestRenalOstiumLps);
+  if (!plan.site.warning.empty())
+    report.Warn(plan.site.warning);
+  StentMeshParams meshParams = params.mesh;
+  if (meshParams.proximalAbscissaMm < 0.0)
+    meshParams.proximalAbscissaMm = plan.site.abscissaMm;
+  plan.mesh = BuildStentMesh(plan.centerlines, meshParams);
+  WallDistanceField wall = WallDistanceField::FromLumen(*plan.lumen.mask, 5.0, StentReach(plan.mesh, plan.centerlines));
+  if (request.initialSurfaceValues)
+  {
+    const Eigen::Index n = plan.mesh.V.rows();
+    plan.initialRadiusMm = Eigen::VectorXd::Constant(n, meshParams.startRadiusMm);
+    plan.initialWallDistanceMm.resize(n);
+    for (Eigen::Index i = 0; i < n; ++i)
+      plan.initialWallDistanceMm[i] = wall.Sample(plan.mesh.V.row(i).transpose());
+  }
+  plan.fitInMeasureMode = !params.simulate.has_value();
+  plan.fit = FitActiveContour(plan.mesh, wall, params.simulate ? *params.simulate : params.measure, report.Callback());
+  if (!plan.fit.converged)
+    report.Warn("The active contour did not converge within " + std::to_string(plan.fit.iterations) +
+                " iterations (acmMaxIterations); the surface written is the last one.");
+  return wall;
+}
+
+void Measure(const WallDistanceField& wall, const PlanParams& params, const StageReporter& report, RepairPlan& plan)
+{
+  report.Begin("MeasureAnatomy", "Measuring diameters, lengths and angles");
+  // Measurements are always read off a measure-mode fit (paper, section 2.2).
+  const Points measureV = plan.fitInMeasureMode ? plan.fit.V : FitActiveContour(plan.mesh, wall, params.measure).V;
+  plan.measurements = MeasureAnatomy(plan.centerlines, plan.mesh, measureV, plan.site);
+  for (const std::string& w : plan.measurements.warnings)
+    if (w != plan.site.warning) // reported with the stent surface already
+      report.Warn(w);
+  plan.rows = plan.measurements.values;
+}
+
+/// The simulated device's sizes as table rows.
+void AddDeviceRows(RepairPlan& plan)
+{
+  const FamilyEvaluation& family = plan.selection.families[plan.simulatedFamily];
+  const std::string name = family.family + (plan.selection.recommended == plan.simulatedFamily ? "" : " (outside IFU)");
+  const StentMesh& mesh = plan.mesh;
+  plan.rows.push_back({ "mainBodyDiameter", family.mainBody.diameterMm, "mm",
+                        name + " main body, " + FormatNumber(family.mainBody.oversizingPercent) + " % over (a)",
+                        "aorta", plan.measurements.site.abscissaMm });
+  plan.rows.push_back({ "rightLimbDiameter", family.rightLimb.diameterMm, "mm",
+                        name + " right limb, " + FormatNumber(family.rightLimb.oversizingPercent) + " % over (e)",
+                        "rightIliac", mesh.ringAbscissaMm[RightLegSegment].back() });
+  plan.rows.push_back({ "leftLimbDiameter", family.leftLimb.diameterMm, "mm",
+                        name + " left limb, " + FormatNumber(family.leftLimb.oversizingPercent) + " % over (f)",
+                        "leftIliac", mesh.ringAbscissaMm[LeftLegSegment].back() });
+  for (const Measurement& m : FitCheckRows(plan.fitCheck, mesh))
+    plan.rows.push_back(m);
+}
+
+void ChooseAndSimulateDevice(const WallDistanceField& wall,
+                             const PlanRequest& request,
+                             const PlanParams& params,
+                             const StageReporter& report,
+                             RepairPlan& plan)
+{
+  report.Begin("SelectDevice", "Choosing the stent graft from the device catalogue");
+  plan.selection = SelectDevice(SizingFromMeasurements(plan.measurements), params.catalog, params.selection);
+  plan.simulatedFamily = FamilyToSimulate(plan.selection);
+  if (plan.simulatedFamily < 0)
+  {
+    const std::string why = "No catalogue device has a main body and both limbs within the oversizing ranges (" +
+                            plan.selection.summary + ")";
+    if (request.requireSimulatedGraft)
+      throw AlgorithmError(why + ", so there is no graft to simulate for outputSimulatedStentModel; widen "
+                                 "proximalOversizingRange or limbOversizingRange, or force one with --device.");
+    report.Warn(why + "; no graft was simulated, so its sizes, seal lengths, oversizing and fit check are not "
+                      "available.");
+    return;
+  }
+  report.Begin("SimulateGraft", "Simulating the chosen stent graft in the vessel");
+  const FamilyEvaluation& family = plan.selection.families[plan.simulatedFamily];
+  plan.graftDiametersMm = { family.mainBody.diameterMm, family.rightLimb.diameterMm, family.leftLimb.diameterMm };
+  ActiveContourParams graftParams = params.graft;
+  for (int s = 0; s < 3; ++s)
+    graftParams.balloonRadiusMm[s] = plan.graftDiametersMm[s] / 2.0;
+  plan.graft = FitActiveContour(plan.mesh, wall, graftParams, report.Callback());
+  plan.fitCheck = CheckGraftFit(plan.mesh, plan.graft.V, plan.graft.wallDistanceMm, plan.measurements, plan.centerlines,
+                                plan.graftDiametersMm);
+  if (plan.selection.recommended < 0)
+    report.Warn("No device is within its instructions for use; the graft simulated is the nearest, " + family.family +
+                " (outside its IFU).");
+  AddDeviceRows(plan);
+}
+
+} // namespace
+
+int FamilyToSimulate(const DeviceSelection& selection)
+{
+  const auto complete = [](const FamilyEvaluation& f)
+  { return f.mainBody.Chosen() && f.rightLimb.Chosen() && f.leftLimb.Chosen(); };
+  if (selection.recommended >= 0 && complete(selection.families[selection.recommended]))
+    return selection.recommended;
+  int best = -1;
+  for (int i = 0; i < static_cast<int>(selection.families.size()); ++i)
+    if (complete(selection.families[i]) && (best < 0 || selection.families[i].Count(CheckStatus::Fail) <
+                                                          selection.families[best].Count(CheckStatus::Fail)))
+      best = i;
+  return best;
+}
+
+RepairPlan PlanRepair(CtImage::ConstPointer ct,
+                      const Point3& seedLps,
+                      const PlanRequest& request,
+                      const PlanParams& params,
+                      const PlanObserver& observer)
+{
+  if (!ct)
+    throw InputError("PlanRepair was given no CT volume; expected a 3-D image in HU.");
+  RepairPlan plan;
+  const StageReporter report(observer, plan);
+  SegmentLumen(*ct, seedLps, params, report, plan);
+  ct = nullptr; // nothing after segmentation reads HU: free the input if the caller handed it over
+  plan.reached = PlanStage::Segmentation;
+  if (request.through < PlanStage::Centerlines)
+    return plan;
+
+  ExtractCenterlines(params, report, plan);
+  plan.reached = PlanStage::Centerlines;
+  if (request.through < PlanStage::StentSurface)
+    return plan;
+
+  const WallDistanceField wall = FitStentSurface(request, params, report, plan);
+  plan.reached = PlanStage::StentSurface;
+  if (request.through < PlanStage::Measurements)
+    return plan;
+
+  Measure(wall, params, report, plan);
+  plan.reached = PlanStage::Measurements;
+  if (request.through < PlanStage::Device)
+    return plan;
+
+  ChooseAndSimulateDevice(wall, request, params, report, plan);
+  plan.reached = PlanStage::Device;
+  return plan;
+}
+
+} // namespace sgp

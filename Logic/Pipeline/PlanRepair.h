@@ -1,0 +1,147 @@
+/// \file PlanRepair.h
+/// The whole planning job as one pure function: DESIGN.md's data flow chained into a RepairPlan
+/// that every front end (the CLI and through it the Slicer panel, reports, cohort runs) consumes.
+///
+///   CT ──► GrowLumenRegion ──► ThinLabelMap ──► BuildSkeletonGraph ──► LabelAortoIliacTree
+///      ──► AssignInscribedRadii ──► FindProximalSite ──► BuildStentMesh ──► WallDistanceField
+///      ──► FitActiveContour (acmMode) [──► FitActiveContour (measure) when acmMode is simulate]
+///      ──► MeasureAnatomy ──► SelectDevice ──► FitActiveContour (simulate, the device's radii)
+///      ──► CheckGraftFit
+///
+/// `PlanRequest::through` says how far to go; each stage needs those before it. Stage names (the
+/// `name` passed to PlanObserver::begin, in this order): SegmentLumen, ThinLumen,
+/// ExtractCenterlines, FitStent, MeasureAnatomy, SelectDevice, SimulateGraft (the last only when a
+/// family has all three sizes).
+///
+/// Memory: the CT is taken by pointer and this function drops its reference once the lumen is
+/// segmented (nothing after segmentation reads HU), so a caller that hands over its only
+/// reference (std::move) frees the full-resolution input before thinning starts.
+///
+/// Frames and units: every point LPS mm, diameters and lengths mm, angles degrees.
+/// Errors: InputError and AlgorithmError from the stages (their messages name the value seen and
+/// what was expected), and an AlgorithmError when `requireSimulatedGraft` is set and no family
+/// has a main body and both limbs within the oversizing ranges. On an exception nothing is
+/// returned; warnings already reported through PlanObserver::warn stay reported.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "Centerlines/LabelAortoIliacTree.h"
+#include "Centerlines/ProximalSite.h"
+#include "Centerlines/SkeletonGraph.h"
+#include "Common/Types.h"
+#include "Device/DeviceCatalog.h"
+#include "Device/FitCheck.h"
+#include "Device/SelectDevice.h"
+#include "Measurement/MeasureAnatomy.h"
+#include "Segmentation/GrowLumenRegion.h"
+#include "Stent/ActiveContour.h"
+#include "Stent/StentMesh.h"
+
+namespace sgp
+{
+
+/// The stages in the order they run; a plan that reaches one has every one before it.
+enum class PlanStage
+{
+  Segmentation = 0, ///< the lumen label map
+  Centerlines,      ///< the labelled Y, its side branches and landmarks
+  StentSurface,     ///< the proximal site, the stent mesh and its active-contour fit (acmMode)
+  Measurements,     ///< (a)–(f), lengths and angles off a measure-mode fit
+  Device            ///< device selection, the simulated graft and its fit check
+};
+
+/// What to compute: decided at the front end from what the user asked for (never output paths).
+struct PlanRequest
+{
+  PlanStage through = PlanStage::Device;
+  /// The initial surface's per-vertex radius and wall distance (only an output of it needs them).
+  bool initialSurfaceValues = false;
+  /// An AlgorithmError when there is no graft to simulate (the simulated graft was asked for).
+  bool requireSimulatedGraft = false;
+  /// The user's lowest renal ostium (LPS mm); empty: found from the renal branches.
+  std::optional<Point3> lowestRenalOstiumLps;
+};
+
+/// Every stage's parameters; defaults equal the XML defaults of StentGraftSimulation.
+struct PlanParams
+{
+  RegionGrowingParams growing;
+  SkeletonGraphParams graph;
+  CenterlineParams centerlines;
+  /// proximalAbscissaMm < 0: the trunk starts at the proximal site found by FindProximalSite.
+  StentMeshParams mesh;
+  /// The measure-mode fit the measurements are read off (paper, section 2.2).
+  ActiveContourParams measure = ActiveContourParams::Measure();
+  /// Set (acmMode simulate): the stent surface is fitted with these instead, and the measurements
+  /// come from a second, measure-mode fit.
+  std::optional<ActiveContourParams> simulate;
+  /// The simulated graft: weights, pressure, step and stopping rule; its balloon radii are set
+  /// from the chosen device's diameters.
+  ActiveContourParams graft = ActiveContourParams::Simulate({ 24.0, 14.0, 14.0 });
+  DeviceSelectionParams selection;
+  /// The device catalogue (read and validated at the edge); needed when the plan reaches Device.
+  DeviceCatalog catalog;
+};
+
+/// Stage boundaries, progress within a stage, and warnings as they arise. Each is optional.
+struct PlanObserver
+{
+  std::function<void(std::string_view name, std::string_view description)> begin;
+  ProgressCallback progress; ///< fraction of the current stage
+  std::function<void(const std::string& warning)> warn;
+  /// Called once the lumen is final, before the later stages run (a front end may start writing
+  /// the label map on another core); the mask is not changed afterwards.
+  std::function<void(const LumenSegmentation& lumen)> lumenReady;
+};
+
+/// The plan: each stage's result (empty where the plan did not reach it).
+struct RepairPlan
+{
+  PlanStage reached = PlanStage::Segmentation;
+
+  LumenSegmentation lumen; ///< its mask is on the input's grid
+  CenterlineTree centerlines;
+
+  ProximalSite site;
+  StentMesh mesh;
+  Eigen::VectorXd initialRadiusMm;       ///< #V, when PlanRequest::initialSurfaceValues
+  Eigen::VectorXd initialWallDistanceMm; ///< #V, likewise
+  ActiveContourResult fit;               ///< the stent surface, fitted in acmMode
+  bool fitInMeasureMode = true;
+
+  Measurements measurements;
+
+  DeviceSelection selection;
+  int simulatedFamily = -1;                                ///< index into selection.families; −1: no graft simulated
+  std::array<double, 3> graftDiametersMm{ 0.0, 0.0, 0.0 }; ///< main body, right limb, left limb
+  ActiveContourResult graft;                               ///< the simulated graft's surface
+  FitCheck fitCheck;
+
+  /// Every warning, in the order they arose (also passed to PlanObserver::warn).
+  std::vector<std::string> warnings;
+  /// The table: the measurements, then the simulated device's sizes and its fit check.
+  std::vector<Measurement> rows;
+
+  bool Reached(PlanStage stage) const { return static_cast<int>(reached) >= static_cast<int>(stage); }
+  bool HasGraft() const { return simulatedFamily >= 0; }
+};
+
+/// Runs the stages up to `request.through`; see the file comment.
+RepairPlan PlanRepair(CtImage::ConstPointer ct,
+                      const Point3& seedLps,
+                      const PlanRequest& request,
+                      const PlanParams& params,
+                      const PlanObserver& observer = {});
+
+/// The family to simulate: the recommended one, else the one with all three sizes chosen and the
+/// fewest failing checks (so that a plan outside every IFU still shows how the nearest graft
+/// sits); −1 when no family has all three sizes.
+int FamilyToSimulate(const DeviceSelection& selection);
+
+} // namespace sgp

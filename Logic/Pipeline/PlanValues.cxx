@@ -1,0 +1,118 @@
+#include "Pipeline/PlanValues.h"
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+#include "Common/Format.h"
+
+namespace sgp
+{
+namespace
+{
+
+PlanValue Number(const std::string& name, double value)
+{
+  if (!std::isfinite(value))
+    return { name, "-1", false };
+  return { name, FormatReturnValue(value), true };
+}
+
+PlanValue Text(const std::string& name, const std::string& value, bool had)
+{
+  return { name, had ? value : "none", had };
+}
+
+PlanValue Boolean(const std::string& name, bool value, bool had)
+{
+  return { name, had && value ? "true" : "false", had };
+}
+
+} // namespace
+
+const std::vector<std::string>& ReturnValueNames()
+{
+  static const std::vector<std::string> names = {
+    "lumenVolumeMl",
+    "lowerHuUsed",
+    "upperHuUsed",
+    "acmIterations",
+    "acmConverged",
+    "edgeHuUsed",
+    "proximalNeckDiameter",
+    "neckDiameter15mm",
+    "maxAneurysmDiameter",
+    "distalNeckMinDiameter",
+    "rightIliacDiameter",
+    "leftIliacDiameter",
+    "proximalNeckLength",
+    "proximalSiteToBifurcationLength",
+    "rightIliacLength",
+    "leftIliacLength",
+    "neckAngleBeta",
+    "neckAngleAlpha",
+    "neckConicity",
+    "rightIliacTortuosity",
+    "leftIliacTortuosity",
+    "rightAccessMinDiameter",
+    "leftAccessMinDiameter",
+    "proximalSiteSource",
+    "recommendedDevice",
+    "mainBodyDiameter",
+    "rightLimbDiameter",
+    "leftLimbDiameter",
+    "withinIfu",
+    "proximalSealLength",
+    "rightIliacSealLength",
+    "leftIliacSealLength",
+    "proximalOversizing",
+    "rightLimbOversizing",
+    "leftLimbOversizing",
+    "coveredOstia",
+    "migrationRisk",
+    "fitCheckPassed",
+  };
+  return names;
+}
+
+std::vector<PlanValue> PlanReturnValues(const RepairPlan& plan)
+{
+  std::map<std::string, PlanValue> byName;
+  const auto put = [&](PlanValue v) { byName[v.name] = std::move(v); };
+  const LumenSegmentation& lumen = plan.lumen;
+  put({ "lumenVolumeMl", FormatReturnValue(lumen.volumeMl) });
+  put({ "lowerHuUsed", FormatReturnValue(lumen.lowerHu) });
+  put({ "upperHuUsed", FormatReturnValue(lumen.upperHu) });
+  put({ "edgeHuUsed", FormatReturnValue(lumen.edgeHu) });
+  const bool fitted = plan.Reached(PlanStage::StentSurface);
+  put({ "acmIterations", std::to_string(fitted ? plan.fit.iterations : 0), fitted });
+  put(Boolean("acmConverged", plan.fit.converged, fitted));
+  // The table rows: the measurements, then the simulated device's sizes and fit check.
+  for (const Measurement& m : plan.rows)
+    put(Number(m.name, m.value));
+  const bool measured = plan.Reached(PlanStage::Measurements);
+  put(Text("proximalSiteSource", ToString(plan.measurements.site.source), measured));
+  const bool selected = plan.Reached(PlanStage::Device);
+  const DeviceSelection& selection = plan.selection;
+  put(Text("recommendedDevice", selection.recommended >= 0 ? selection.families[selection.recommended].family : "none",
+           selected));
+  put(Boolean("withinIfu", selection.recommended >= 0 && selection.recommendedWithinIfu, selected));
+  const bool simulated = plan.HasGraft();
+  put(Text("coveredOstia", plan.fitCheck.CoveredOstia(), simulated));
+  put(Boolean("migrationRisk", plan.fitCheck.migrationRisk, simulated));
+  put(Boolean("fitCheckPassed", plan.fitCheck.Passed(), simulated));
+
+  std::vector<PlanValue> values;
+  for (const std::string& name : ReturnValueNames())
+  {
+    const auto found = byName.find(name);
+    values.push_back(found != byName.end() ? found->second : PlanValue{ name, "-1", false });
+    if (found != byName.end())
+      byName.erase(found);
+  }
+  if (!byName.empty()) // a table row or value that the XML does not declare: a programming error
+    throw std::logic_error("PlanReturnValues: " + byName.begin()->first + " is not in ReturnValueNames()");
+  return values;
+}
+
+} // namespace sgp

@@ -1,0 +1,510 @@
+#include "Segmentation/GrowLumenRegion.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+
+#include "Common/CheckRange.h"
+#include "Common/Errors.h"
+#include "Common/Format.h"
+#include "Common/ImageGeometry.h"
+#include "Common/IndexBox.h"
+#include "Common/MaskGrid.h"
+#include "Common/Median.h"
+
+namespace sgp
+{
+
+namespace
+{
+
+struct SeedStatistics
+{
+  double medianHu = 0.0;
+  double sigmaHu = 0.0;
+  std::vector<CtImage::IndexType> voxels; ///< the neighbourhood, nearest to the seed first
+};
+
+/// Median and 1.4826·MAD of the voxels whose centres lie within `radiusMm` of the seed (at least
+/// the seed voxel's 3×3×3 neighbourhood on coarse grids).
+SeedStatistics MeasureSeedNeighbourhood(const CtImage& ct,
+                                        const CtImage::IndexType& seed,
+                                        const Point3& seedLps,
+                                        double radiusMm)
+{
+  const auto spacing = ct.GetSpacing();
+  const auto region = ct.GetLargestPossibleRegion();
+  std::vector<std::pair<double, CtImage::IndexType>> found;
+  std::array<long, 3> reach{};
+  for (unsigned a = 0; a < 3; ++a)
+  {
+    reach[a] = std::max(1L, static_cast<long>(std::ceil(radiusMm / spacing[a])));
+  }
+  for (long dk = -reach[2]; dk <= reach[2]; ++dk)
+  {
+    for (long dj = -reach[1]; dj <= reach[1]; ++dj)
+    {
+      for (long di = -reach[0]; di <= reach[0]; ++di)
+      {
+        CtImage::IndexType index = seed;
+        index[0] += di;
+        index[1] += dj;
+        index[2] += dk;
+        if (!region.IsInside(index))
+        {
+          continue;
+        }
+        const double distance = (IndexToLps(ct, index) - seedLps).norm();
+        const bool inCube = std::abs(di) <= 1 && std::abs(dj) <= 1 && std::abs(dk) <= 1;
+        if (distance <= radiusMm || inCube)
+        {
+          found.emplace_back(distance, index);
+        }
+      }
+    }
+  }
+  std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  SeedStatistics stats;
+  std::vector<double> values;
+  for (const auto& [distance, index] : found)
+  {
+    stats.voxels.push_back(index);
+    values.push_back(ct.GetPixel(index));
+  }
+  stats.medianHu = Median(values);
+  for (double& v : values)
+  {
+    v = std::abs(v - stats.medianHu);
+  }
+  stats.sigmaHu = 1.4826 * Median(values);
+  return stats;
+}
+
+/// Median HU `depth[axis]` voxels outside the region, sampled along the axes from its boundary.
+double MeasureTissueHu(const MaskGrid& mask, const std::vector<short>& hu, const std::array<long, 3>& depth)
+{
+  std::vector<double> samples;
+  for (long flat = 0; flat < mask.Count(); ++flat)
+  {
+    if (!mask.voxels[flat])
+    {
+      continue;
+    }
+    const auto ijk = mask.Ijk(flat);
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      for (int sign : { -1, 1 })
+      {
+        auto n = ijk;
+        n[axis] += sign;
+        auto far = ijk;
+        far[axis] += sign * depth[axis];
+        if (far[axis] < 0 || far[axis] >= mask.size[axis] || mask.voxels[mask.Flat(n[0], n[1], n[2])])
+        {
+          continue;
+        }
+        const long farFlat = mask.Flat(far[0], far[1], far[2]);
+        if (!mask.voxels[farFlat])
+        {
+          samples.push_back(hu[farFlat]);
+        }
+      }
+    }
+  }
+  return samples.empty() ? std::numeric_limits<double>::quiet_NaN() : Median(samples);
+}
+
+short ClampToShort(double value)
+{
+  return static_cast<short>(
+    std::clamp(value, double(std::numeric_limits<short>::min()), double(std::numeric_limits<short>::max())));
+}
+
+/// Step 1: the window from the seed's neighbourhood (Auto) or as given (Manual), with the seed
+/// checks; sets the window and seed statistics of `result`.
+SeedStatistics EstimateWindow(const CtImage& ct,
+                              const CtImage::IndexType& seed,
+                              const Point3& seedLps,
+                              const RegionGrowingParams& params,
+                              LumenSegmentation& result)
+{
+  SeedStatistics stats = MeasureSeedNeighbourhood(ct, seed, seedLps, params.seedNeighbourhoodRadiusMm);
+  result.seedMedianHu = stats.medianHu;
+  result.seedSigmaHu = stats.sigmaHu;
+  const std::string seedText = "Seed " + FormatPoint(seedLps) + " mm LPS";
+  if (stats.medianHu < params.seedMinimumHu)
+  {
+    throw InputError(
+      seedText + " lies in tissue of " + FormatNumber(stats.medianHu, 0) + " HU (median of " +
+      std::to_string(stats.voxels.size()) + " voxels around it); expected contrast-filled lumen of at least " +
+      FormatNumber(params.seedMinimumHu, 0) + " HU (seedMinimumHu); move the seed into the aortic lumen.");
+  }
+  if (params.thresholdMode == ThresholdMode::Auto)
+  {
+    const double half = std::max(params.windowSigmas * stats.sigmaHu, params.minimumHalfWindowHu);
+    result.lowerHu = stats.medianHu - half;
+    result.upperHu = stats.medianHu + 2.0 * half;
+  }
+  else
+  {
+    result.lowerHu = params.lowerHu;
+    result.upperHu = params.upperHu;
+    if (stats.medianHu < params.lowerHu || stats.medianHu > params.upperHu)
+    {
+      throw InputError(seedText + " has a median of " + FormatNumber(stats.medianHu, 0) +
+                       " HU, outside the manual window " + FormatNumber(params.lowerHu, 0) + " to " +
+                       FormatNumber(params.upperHu, 0) + " HU; widen the window or use thresholdMode auto.");
+    }
+  }
+  return stats;
+}
+
+/// One bit per voxel of the CT's grid (1/16 of the CT's size): the region growing's marks.
+class VoxelBits
+{
+public:
+  explicit VoxelBits(long count)
+    : m_Words(static_cast<std::size_t>((count + 63) / 64), 0)
+  {
+  }
+  bool Test(long flat) const { return (m_Words[flat >> 6] >> (flat & 63)) & 1u; }
+  void Set(long flat) { m_Words[flat >> 6] |= std::uint64_t(1) << (flat & 63); }
+
+private:
+  std::vector<std::uint64_t> m_Words;
+};
+
+/// Step 2: the face-connected (6-neighbour) region of voxels with HU in the window, from the
+/// neighbourhood voxel nearest the seed that lies in it (noise may put the seed voxel itself just
+/// outside) — the region ITK's ConnectedThresholdImageFilter grows with face connectivity, marked
+/// in one bit per voxel instead of its full-size output and scratch images. Returns the marks and
+/// sets `box` to the region's bounding box grown by `pad` voxels (clipped to the image).
+VoxelBits GrowFromSeed(const CtImage& ct,
+                       const SeedStatistics& stats,
+                       const LumenSegmentation& result,
+                       const std::array<long, 3>& pad,
+                       IndexBox& box)
+{
+  const auto start = std::find_if(
+    stats.voxels.begin(), stats.voxels.end(),
+    [&](const auto& index) { return ct.GetPixel(index) >= result.lowerHu && ct.GetPixel(index) <= result.upperHu; });
+  if (start == stats.voxels.end())
+  {
+    // Cannot happen: the median is one of the neighbourhood's values and lies in the window.
+    throw std::logic_error("GrowLumenRegion: no seed-neighbourhood voxel in the window");
+  }
+  const short lower = ClampToShort(std::ceil(result.lowerHu)), upper = ClampToShort(std::floor(result.upperHu));
+  const auto size = ct.GetLargestPossibleRegion().GetSize();
+  const long nx = long(size[0]), ny = long(size[1]), nz = long(size[2]), slice = nx * ny;
+  const short* hu = ct.GetBufferPointer();
+  VoxelBits inRegion(slice * nz);
+  std::array<long, 3> lo{ nx, ny, nz }, hi{ -1, -1, -1 };
+  std::vector<long> stack{ (*start)[0] + nx * ((*start)[1] + ny * (*start)[2]) };
+  inRegion.Set(stack.back());
+  const auto visit = [&](long flat)
+  {
+    if (!inRegion.Test(flat) && hu[flat] >= lower && hu[flat] <= upper)
+    {
+      inRegion.Set(flat);
+      stack.push_back(flat);
+    }
+  };
+  while (!stack.empty())
+  {
+    const long flat = stack.back();
+    stack.pop_back();
+    const long k = flat / slice, j = (flat - k * slice) / nx, i = flat - k * slice - j * nx;
+    lo = { std::min(lo[0], i), std::min(lo[1], j), std::min(lo[2], k) };
+    hi = { std::max(hi[0], i), std::max(hi[1], j), std::max(hi[2], k) };
+    if (i > 0)
+      visit(flat - 1);
+    if (i + 1 < nx)
+      visit(flat + 1);
+    if (j > 0)
+      visit(flat - nx);
+    if (j + 1 < ny)
+      visit(flat + nx);
+    if (k > 0)
+      visit(flat - slice);
+    if (k + 1 < nz)
+      visit(flat + slice);
+  }
+  box = PaddedBox(lo, hi, pad, size);
+  return inRegion;
+}
+
+/// The grown region's padded bounding box, with the region and the CT's HU copied into it: every
+/// later step works on this box only.
+struct CroppedRegion
+{
+  IndexBox box;
+  MaskGrid region;
+  std::vector<short> hu;
+};
+
+CroppedRegion CropToRegion(const CtImage& ct, const VoxelBits& inRegion, const IndexBox& box)
+{
+  CroppedRegion crop;
+  crop.box = box;
+  crop.region = MaskGrid(crop.box.size);
+  crop.hu.resize(static_cast<std::size_t>(crop.region.Count()));
+  ForEachInBox(crop.box, ct.GetLargestPossibleRegion().GetSize(),
+               [&](long flat, long image)
+               {
+                 crop.region.voxels[flat] = inRegion.Test(image) ? 1 : 0;
+                 crop.hu[flat] = ct.GetBufferPointer()[image];
+               });
+  return crop;
+}
+
+/// The opening's ball per axis, rounded down so that it never reaches further than
+/// leakOpeningRadiusMm: a coarse axis (2–3 mm slices) is not eroded at all rather than by a whole
+/// slice too many.
+std::array<int, 3> OpeningBallIjk(const CtImage::SpacingType& spacing, double radiusMm)
+{
+  std::array<int, 3> openIjk{};
+  for (unsigned a = 0; a < 3; ++a)
+    openIjk[a] = static_cast<int>(std::floor(radiusMm / spacing[a] + 1e-9));
+  return openIjk;
+}
+
+/// The region after leak cutting, and its interior (the opening's eroded seed component).
+struct CutRegion
+{
+  MaskGrid lumen;
+  MaskGrid interior;
+};
+
+/// Step 3: opening with the ball, keeping the seed's component; cut-off pieces under
+/// leakMinimumPieceMl go back, larger ones stay cut and are reported in `result`.
+CutRegion CutLeaks(const CtImage& ct,
+                   const CroppedRegion& crop,
+                   const SeedStatistics& stats,
+                   const std::array<int, 3>& openIjk,
+                   const std::string& seedText,
+                   const RegionGrowingParams& params,
+                   double voxelMl,
+                   LumenSegmentation& result)
+{
+  const MaskGrid& core = crop.region;
+  const IndexBox& box = crop.box;
+  CutRegion out{ core, core };
+  if (openIjk[0] + openIjk[1] + openIjk[2] == 0)
+    return out;
+  const auto ball = BallOffsets(openIjk);
+  const MaskGrid eroded = Erode(core, ball);
+  // The component of the eroded voxel nearest the seed: a noise pit next to the seed voxel may
+  // erode the seed voxel itself.
+  long interiorSeed = -1;
+  for (const auto& index : stats.voxels)
+  {
+    const std::array<long, 3> b{ index[0] - box.first[0], index[1] - box.first[1], index[2] - box.first[2] };
+    if (b[0] < 0 || b[1] < 0 || b[2] < 0 || b[0] >= box.size[0] || b[1] >= box.size[1] || b[2] >= box.size[2])
+      continue;
+    const long flat = core.Flat(b[0], b[1], b[2]);
+    if (eroded.voxels[flat])
+    {
+      interiorSeed = flat;
+      break;
+    }
+  }
+  out.interior = ConnectedComponent(eroded, interiorSeed);
+  if (out.interior.CountForeground() == 0)
+  {
+    throw InputError(seedText + " lies in a vessel narrower than the leak-cutting opening (" +
+                     FormatNumber(2 * params.leakOpeningRadiusMm, 1) +
+                     " mm across); place the seed in the aorta, or lower leakOpeningRadiusMm.");
+  }
+  out.lumen = Dilate(out.interior, ball);
+  MaskGrid cut(core.size);
+  for (long flat = 0; flat < core.Count(); ++flat)
+  {
+    out.lumen.voxels[flat] = out.lumen.voxels[flat] && core.voxels[flat];
+    cut.voxels[flat] = core.voxels[flat] && !out.lumen.voxels[flat];
+  }
+  // Pieces below leakMinimumPieceMl are vessels that narrow below the ball (small branches, a
+  // stenosis) and go back; larger ones are what a leak into bone, kidney or bowel looks like.
+  std::vector<long> sizes;
+  const std::vector<int> pieces = LabelComponents(cut, sizes);
+  long largest = 0, largestVoxel = -1;
+  for (long flat = 0; flat < cut.Count(); ++flat)
+  {
+    if (!pieces[flat])
+      continue;
+    const long size = sizes[pieces[flat] - 1];
+    if (size * voxelMl < params.leakMinimumPieceMl)
+    {
+      out.lumen.voxels[flat] = 1;
+      cut.voxels[flat] = 0;
+    }
+    else if (size > largest)
+    {
+      largest = size;
+      largestVoxel = flat;
+    }
+  }
+  result.cutVolumeMl = cut.CountForeground() * voxelMl;
+  if (largestVoxel >= 0)
+  {
+    const auto ijk = cut.Ijk(largestVoxel);
+    CtImage::IndexType where{ { box.first[0] + ijk[0], box.first[1] + ijk[1], box.first[2] + ijk[2] } };
+    result.warnings.push_back("Leak cut: " + FormatNumber(result.cutVolumeMl, 1) +
+                              " mL joined to the lumen only through bridges thinner than " +
+                              FormatNumber(2 * params.leakOpeningRadiusMm, 1) + " mm was removed (the largest piece " +
+                              FormatNumber(largest * voxelMl, 1) + " mL, near " + FormatPoint(IndexToLps(ct, where)) +
+                              " mm LPS); check for bone or bowel there.");
+  }
+  return out;
+}
+
+/// Step 4: the tissue level just outside the region; more than darkLeakLimitMl of the interior
+/// darker than tissue + 0.7·(m − tissue) means a flood into another tissue class.
+void CheckForDarkFlood(const CutRegion& region,
+                       const std::vector<short>& hu,
+                       const std::array<long, 3>& tissueDepth,
+                       const SeedStatistics& stats,
+                       const RegionGrowingParams& params,
+                       double voxelMl,
+                       LumenSegmentation& result)
+{
+  result.tissueHu = MeasureTissueHu(region.lumen, hu, tissueDepth);
+  if (std::isnan(result.tissueHu))
+  {
+    result.tissueHu = std::min(params.seedMinimumHu, result.lowerHu);
+  }
+  const double darkHu = result.tissueHu + 0.7 * (stats.medianHu - result.tissueHu);
+  long dark = 0;
+  for (long flat = 0; flat < region.interior.Count(); ++flat)
+  {
+    dark += (region.interior.voxels[flat] && hu[flat] < darkHu) ? 1 : 0;
+  }
+  if (dark * voxelMl > params.darkLeakLimitMl)
+  {
+    throw AlgorithmError("Region growing leaked into darker tissue: " + FormatNumber(dark * voxelMl, 1) +
+                         " mL deep inside the region is below " + FormatNumber(darkHu, 0) +
+                         " HU, while the lumen at the " + "seed is " + FormatNumber(stats.medianHu, 0) +
+                         " HU (likely kidney, bowel or marrow); raise the " + "lower threshold (now " +
+                         FormatNumber(result.lowerHu, 0) + " HU) or use thresholdMode auto.");
+  }
+}
+
+/// Steps 5 and 6: the boundary moved to the half-maximum edge level, then pits and holes filled.
+void RefineBoundary(MaskGrid& lumen,
+                    const std::vector<short>& hu,
+                    int refineSteps,
+                    const SeedStatistics& stats,
+                    LumenSegmentation& result)
+{
+  result.edgeHu = 0.5 * (stats.medianHu + result.tissueHu);
+  std::vector<bool> accept(static_cast<std::size_t>(lumen.Count()));
+  for (long flat = 0; flat < lumen.Count(); ++flat)
+  {
+    accept[flat] = hu[flat] >= result.edgeHu && hu[flat] <= result.upperHu;
+  }
+  GrowConstrained(lumen, accept, refineSteps);
+  // Noise leaves single-voxel pits in the boundary (a voxel just inside the wall drawn below the
+  // edge level); the inscribed-sphere radius of the centerlines is the distance to the nearest of
+  // them, so they are filled: a background voxel with 5 or 6 lumen faces becomes lumen.
+  FillSurfacePits(lumen, 5);
+  FillHoles(lumen);
+}
+
+/// The cropped lumen pasted into a mask on the CT's grid.
+LabelImage::Pointer PasteOnGrid(const CtImage& ct, const MaskGrid& lumen, const IndexBox& box)
+{
+  LabelImage::Pointer mask = LabelImage::New();
+  mask->CopyInformation(&ct);
+  mask->SetRegions(ct.GetLargestPossibleRegion());
+  mask->Allocate(true);
+  ForEachInBox(box, ct.GetLargestPossibleRegion().GetSize(),
+               [&](long flat, long image) { mask->GetBufferPointer()[image] = lumen.voxels[flat]; });
+  return mask;
+}
+
+} // namespace
+
+void ValidateRegionGrowingParams(const RegionGrowingParams& params)
+{
+  const auto check = CheckRange;
+  check("lowerHu", params.lowerHu, -1024, 3071, "HU");
+  check("upperHu", params.upperHu, -1024, 3071, "HU");
+  check("windowSigmas", params.windowSigmas, 1, 10, "standard deviations");
+  check("seedMinimumHu", params.seedMinimumHu, -1024, 3071, "HU");
+  check("leakOpeningRadiusMm", params.leakOpeningRadiusMm, 0, 5, "mm");
+  check("maximumLumenVolumeMl", params.maximumLumenVolumeMl, 1, 20000, "mL");
+  check("seedNeighbourhoodRadiusMm", params.seedNeighbourhoodRadiusMm, 0, 20, "mm");
+  check("minimumHalfWindowHu", params.minimumHalfWindowHu, 0, 1000, "HU");
+  check("refineDistanceMm", params.refineDistanceMm, 0, 10, "mm");
+  check("tissueDepthMm", params.tissueDepthMm, 0, 20, "mm");
+  if (params.thresholdMode == ThresholdMode::Manual && !(params.lowerHu < params.upperHu))
+  {
+    throw InputError("lowerHu (" + FormatNumber(params.lowerHu, 1) + " HU) must be less than upperHu (" +
+                     FormatNumber(params.upperHu, 1) + " HU); swap them or widen the window.");
+  }
+}
+
+LumenSegmentation GrowLumenRegion(const CtImage& ct,
+                                  const Point3& seedLps,
+                                  const RegionGrowingParams& params,
+                                  const ProgressCallback& progress)
+{
+  ValidateRegionGrowingParams(params);
+  const CtImage::IndexType seed = LpsToIndexInside(ct, seedLps, "Seed");
+  const auto spacing = ct.GetSpacing();
+  const double voxelMl = spacing[0] * spacing[1] * spacing[2] / 1000.0;
+  const std::string seedText = "Seed " + FormatPoint(seedLps) + " mm LPS";
+  LumenSegmentation result;
+
+  ReportProgress(progress, 0.0, "Estimating the HU window at the seed");
+  const SeedStatistics stats = EstimateWindow(ct, seed, seedLps, params, result);
+
+  // The box every later step works in: the grown region padded by the opening, the boundary
+  // refinement's reach and the tissue depth.
+  const std::array<int, 3> openIjk = OpeningBallIjk(spacing, params.leakOpeningRadiusMm);
+  const double minSpacing = std::min({ spacing[0], spacing[1], spacing[2] });
+  const int refineSteps = static_cast<int>(std::ceil(params.refineDistanceMm / minSpacing));
+  // Tissue is sampled beyond the blur of the edge: tissueDepthMm outside, at least 3 voxels.
+  std::array<long, 3> tissueDepth{}, pad{};
+  for (unsigned a = 0; a < 3; ++a)
+  {
+    tissueDepth[a] = std::max(3L, static_cast<long>(std::ceil(params.tissueDepthMm / spacing[a])));
+    pad[a] = openIjk[a] + refineSteps + tissueDepth[a] + 2;
+  }
+
+  ReportProgress(progress, 0.05, "Region growing");
+  CroppedRegion crop;
+  {
+    IndexBox box;
+    const VoxelBits grown = GrowFromSeed(ct, stats, result, pad, box);
+    crop = CropToRegion(ct, grown, box);
+  } // the marks are freed here: only the CT and box-sized buffers are held until the mask is pasted
+  ReportProgress(progress, 0.4, "Cutting leaks");
+  CutRegion region = CutLeaks(ct, crop, stats, openIjk, seedText, params, voxelMl, result);
+
+  ReportProgress(progress, 0.6, "Checking for leaks");
+  CheckForDarkFlood(region, crop.hu, tissueDepth, stats, params, voxelMl, result);
+
+  ReportProgress(progress, 0.7, "Refining the boundary");
+  RefineBoundary(region.lumen, crop.hu, refineSteps, stats, result);
+
+  result.volumeMl = region.lumen.CountForeground() * voxelMl;
+  if (result.volumeMl > params.maximumLumenVolumeMl)
+  {
+    throw AlgorithmError("Region growing leaked: " + FormatNumber(result.volumeMl, 0) + " mL segmented, limit " +
+                         FormatNumber(params.maximumLumenVolumeMl, 0) + " mL (maximumLumenVolumeMl); lower the upper " +
+                         "threshold (now " + FormatNumber(result.upperHu, 0) + " HU) or move the seed.");
+  }
+
+  ReportProgress(progress, 0.9, "Writing the mask");
+  // Free what is no longer needed before the full-grid mask is allocated.
+  region.interior = MaskGrid();
+  crop.region = MaskGrid();
+  std::vector<short>().swap(crop.hu);
+  result.mask = PasteOnGrid(ct, region.lumen, crop.box);
+  ReportProgress(progress, 1.0, "Done");
+  return result;
+}
+
+} // namespace sgp

@@ -1,0 +1,225 @@
+// The planning pipeline in-process (issue 11): PlanRepair on generated phantoms against their
+// analytic truth — no executable involved — and the plan's return values.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "Common/Errors.h"
+#include "IO/ReadDeviceCatalog.h"
+#include "Phantom/AorticPhantom.h"
+#include "Pipeline/PlanRepair.h"
+#include "Pipeline/PlanValues.h"
+
+namespace sgp
+{
+namespace
+{
+
+/// Issue 5's bar for (a)–(f) on 0.8 × 0.8 × 1.0 mm voxels: the fitted ring lies on the segmented
+/// wall, within half a voxel of the analytic wall on each side.
+constexpr double diameterMm = 1.0;
+
+PlanParams DefaultParams()
+{
+  PlanParams params;
+  params.catalog = ReadDeviceCatalog(SGP_DEVICES_JSON);
+  return params;
+}
+
+/// The default phantom (0.8 × 0.8 × 1.0 mm, noise 20 HU, renal arteries), planned once for the suite.
+class DefaultPhantomPlan : public ::testing::Test
+{
+protected:
+  static void SetUpTestSuite()
+  {
+    phantom = new AorticPhantom(GenerateAorticPhantom(PhantomParams{}));
+    PlanObserver observer;
+    observer.begin = [](std::string_view name, std::string_view) { stages->emplace_back(name); };
+    observer.warn = [](const std::string& w) { warned->push_back(w); };
+    stages = new std::vector<std::string>;
+    warned = new std::vector<std::string>;
+    plan = new RepairPlan(PlanRepair(phantom->ct, phantom->truth.seedLps, PlanRequest{}, DefaultParams(), observer));
+  }
+  static void TearDownTestSuite()
+  {
+    delete plan;
+    delete phantom;
+    delete stages;
+    delete warned;
+  }
+  static AorticPhantom* phantom;
+  static RepairPlan* plan;
+  static std::vector<std::string>* stages;
+  static std::vector<std::string>* warned;
+};
+AorticPhantom* DefaultPhantomPlan::phantom = nullptr;
+RepairPlan* DefaultPhantomPlan::plan = nullptr;
+std::vector<std::string>* DefaultPhantomPlan::stages = nullptr;
+std::vector<std::string>* DefaultPhantomPlan::warned = nullptr;
+
+TEST_F(DefaultPhantomPlan, SizingDiameters_WithinTheBarOfTheTruth)
+{
+  ASSERT_TRUE(plan->Reached(PlanStage::Device));
+  const Measurements& m = plan->measurements;
+  const PhantomSizing& truth = phantom->truth.sizing;
+  EXPECT_NEAR(m.Value("proximalNeckDiameter"), truth.proximalNeckDiameter, diameterMm);
+  EXPECT_NEAR(m.Value("neckDiameter15mm"), truth.neckDiameter15mm, diameterMm);
+  EXPECT_NEAR(m.Value("maxAneurysmDiameter"), truth.maxAneurysmDiameter, diameterMm);
+  EXPECT_NEAR(m.Value("distalNeckMinDiameter"), truth.distalNeckMinDiameter, diameterMm);
+  EXPECT_NEAR(m.Value("rightIliacDiameter"), truth.rightIliacDiameter, diameterMm);
+  EXPECT_NEAR(m.Value("leftIliacDiameter"), truth.leftIliacDiameter, diameterMm);
+}
+
+TEST_F(DefaultPhantomPlan, ProximalSite_FromTheRenalBranches)
+{
+  EXPECT_EQ(plan->site.source, ProximalSiteSource::Renal);
+  EXPECT_EQ(plan->measurements.site.source, ProximalSiteSource::Renal);
+  // The trunk's first ring is the site itself (measurement (a) is read there).
+  EXPECT_NEAR(plan->mesh.ringAbscissaMm[TrunkSegment].front(), plan->site.abscissaMm, 1e-9);
+}
+
+TEST_F(DefaultPhantomPlan, Recommendation_EqualsTheOneForTheTruthsSizing)
+{
+  // The selection on the analytic truth; α and the access diameters, which the truth does not
+  // state, are the measured ones (the default phantom passes both checks by a wide margin).
+  const PhantomSizing& truth = phantom->truth.sizing;
+  SizingAnatomy anatomy = SizingFromMeasurements(plan->measurements);
+  anatomy.proximalNeckDiameterMm = truth.proximalNeckDiameter;
+  anatomy.neckDiameter15mmMm = truth.neckDiameter15mm;
+  anatomy.proximalNeckLengthMm = truth.proximalNeckLength;
+  anatomy.neckAngleBetaDeg = truth.neckAngleBetaDeg;
+  anatomy.rightIliacDiameterMm = truth.rightIliacDiameter;
+  anatomy.leftIliacDiameterMm = truth.leftIliacDiameter;
+  anatomy.rightIliacSealLengthMm = truth.rightIliacLength;
+  anatomy.leftIliacSealLengthMm = truth.leftIliacLength;
+  anatomy.proximalSiteToBifurcationLengthMm = truth.proximalSiteToBifurcationLength;
+  const DeviceSelection expected = SelectDevice(anatomy, DefaultParams().catalog);
+  ASSERT_GE(expected.recommended, 0) << expected.summary;
+  ASSERT_GE(plan->selection.recommended, 0) << plan->selection.summary;
+  const FamilyEvaluation& want = expected.families[expected.recommended];
+  const FamilyEvaluation& got = plan->selection.families[plan->selection.recommended];
+  EXPECT_EQ(got.family, want.family);
+  EXPECT_EQ(got.mainBody.diameterMm, want.mainBody.diameterMm);
+  EXPECT_EQ(got.rightLimb.diameterMm, want.rightLimb.diameterMm);
+  EXPECT_EQ(got.leftLimb.diameterMm, want.leftLimb.diameterMm);
+  // And the graft simulated is the recommended one, its sizes in the table.
+  EXPECT_EQ(plan->simulatedFamily, plan->selection.recommended);
+  const auto row = [&](const std::string& name)
+  {
+    const auto found =
+      std::find_if(plan->rows.begin(), plan->rows.end(), [&](const Measurement& r) { return r.name == name; });
+    return found == plan->rows.end() ? std::nan("") : found->value;
+  };
+  EXPECT_EQ(row("mainBodyDiameter"), want.mainBody.diameterMm);
+  EXPECT_EQ(row("rightLimbDiameter"), want.rightLimb.diameterMm);
+  EXPECT_EQ(row("leftLimbDiameter"), want.leftLimb.diameterMm);
+}
+
+TEST_F(DefaultPhantomPlan, Stages_BegunInTheDocumentedOrder)
+{
+  const std::vector<std::string> expected = { "SegmentLumen",   "ThinLumen",    "ExtractCenterlines", "FitStent",
+                                              "MeasureAnatomy", "SelectDevice", "SimulateGraft" };
+  EXPECT_EQ(*stages, expected);
+  EXPECT_EQ(*warned, plan->warnings); // every warning reaches the observer and stays in the plan
+}
+
+TEST_F(DefaultPhantomPlan, ReturnValues_EveryNameOnceInOrderAndMeasured)
+{
+  const std::vector<PlanValue> values = PlanReturnValues(*plan);
+  ASSERT_EQ(values.size(), ReturnValueNames().size());
+  for (std::size_t i = 0; i < values.size(); ++i)
+  {
+    SCOPED_TRACE(values[i].name);
+    EXPECT_EQ(values[i].name, ReturnValueNames()[i]);
+    // The default phantom has every value: its scan reaches 30 mm above the site (α), both
+    // external iliacs (access), the internal iliacs (lengths), and a graft is simulated.
+    EXPECT_TRUE(values[i].measured) << values[i].text;
+  }
+}
+
+TEST(PlanRepair, StopsAtTheRequestedStage_LaterResultsEmptyAndValuesUnmeasured)
+{
+  const AorticPhantom phantom = GenerateAorticPhantom(PhantomParams{});
+  PlanRequest request;
+  request.through = PlanStage::Centerlines;
+  std::vector<std::string> stages;
+  PlanObserver observer;
+  observer.begin = [&](std::string_view name, std::string_view) { stages.emplace_back(name); };
+  const RepairPlan plan = PlanRepair(phantom.ct, phantom.truth.seedLps, request, PlanParams{}, observer);
+  EXPECT_EQ(plan.reached, PlanStage::Centerlines);
+  EXPECT_FALSE(plan.Reached(PlanStage::StentSurface));
+  EXPECT_EQ(stages, (std::vector<std::string>{ "SegmentLumen", "ThinLumen", "ExtractCenterlines" }));
+  EXPECT_GT(plan.centerlines.aorta.Size(), 0);
+  EXPECT_EQ(plan.mesh.V.rows(), 0);
+  EXPECT_TRUE(plan.rows.empty());
+  for (const PlanValue& v : PlanReturnValues(plan))
+  {
+    SCOPED_TRACE(v.name);
+    const bool lumenValue =
+      v.name == "lumenVolumeMl" || v.name == "lowerHuUsed" || v.name == "upperHuUsed" || v.name == "edgeHuUsed";
+    EXPECT_EQ(v.measured, lumenValue);
+    if (!lumenValue)
+    {
+      EXPECT_TRUE(v.text == "-1" || v.text == "none" || v.text == "false" || v.text == "0") << v.text;
+    }
+  }
+}
+
+TEST(PlanRepair, HandedOverCt_FreedOnceTheLumenIsSegmented)
+{
+  const AorticPhantom phantom = GenerateAorticPhantom(PhantomParams{});
+  CtImage::Pointer ct = phantom.ct; // the phantom keeps its own reference: count them
+  const int before = ct->GetReferenceCount();
+  int duringThinning = -1;
+  PlanRequest request;
+  request.through = PlanStage::Centerlines;
+  PlanObserver observer;
+  observer.begin = [&](std::string_view name, std::string_view)
+  {
+    if (name == "ThinLumen")
+      duringThinning = ct->GetReferenceCount();
+  };
+  CtImage::Pointer handedOver = ct;
+  EXPECT_EQ(ct->GetReferenceCount(), before + 1);
+  PlanRepair(std::move(handedOver), phantom.truth.seedLps, request, PlanParams{}, observer);
+  EXPECT_EQ(duringThinning, before); // the pipeline held no reference any more
+}
+
+TEST(PlanRepair, NoGraftToSimulate_ValuesUnmeasuredOrAnErrorWhenTheGraftWasAskedFor)
+{
+  // An oversizing range no catalogue size reaches (95–100 %): no main body for any family.
+  const AorticPhantom phantom = GenerateAorticPhantom(PhantomParams{});
+  PlanParams params = DefaultParams();
+  params.selection.proximalOversizingMinPercent = 95.0;
+  params.selection.proximalOversizingMaxPercent = 100.0;
+  const RepairPlan plan = PlanRepair(phantom.ct, phantom.truth.seedLps, PlanRequest{}, params);
+  EXPECT_FALSE(plan.HasGraft());
+  EXPECT_TRUE(std::any_of(plan.warnings.begin(), plan.warnings.end(),
+                          [](const std::string& w) { return w.find("no graft was simulated") != std::string::npos; }));
+  for (const PlanValue& v : PlanReturnValues(plan))
+    if (v.name == "mainBodyDiameter" || v.name == "proximalSealLength" || v.name == "fitCheckPassed" ||
+        v.name == "coveredOstia")
+    {
+      SCOPED_TRACE(v.name);
+      EXPECT_FALSE(v.measured);
+    }
+    else if (v.name == "proximalNeckDiameter" || v.name == "recommendedDevice")
+    {
+      EXPECT_TRUE(v.measured) << v.name;
+    }
+
+  PlanRequest graftRequired;
+  graftRequired.requireSimulatedGraft = true;
+  EXPECT_THROW(PlanRepair(phantom.ct, phantom.truth.seedLps, graftRequired, params), AlgorithmError);
+}
+
+TEST(PlanRepair, NoCt_InputError)
+{
+  EXPECT_THROW(PlanRepair(nullptr, Point3::Zero(), PlanRequest{}, PlanParams{}), InputError);
+}
+
+} // namespace
+} // namespace sgp
