@@ -15,7 +15,9 @@ namespace
 {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-constexpr double snapMm = 10.0; ///< axes meeting farther from the junction are not trusted
+constexpr double snapMm = 10.0;       ///< axes meeting farther from the junction are not trusted
+constexpr double minimumSkipMm = 5.0; ///< the least length of a branch's centerline left out at a junction
+constexpr double chordMm = 15.0;      ///< each internal iliac chord's length
 
 using Line = std::pair<Point3, Eigen::Vector3d>; ///< a point on the line and its unit direction
 
@@ -55,11 +57,17 @@ double InternalIliacOriginAbscissa(const CenterlineTree& tree, int side)
     return nan;
   const double junction = ProjectOntoCenterline(iliac, junctionLandmark->lps);
   const Centerline* internal = tree.FindVessel(std::string(Side(side)) + "InternalIliac");
-  if (!internal || internal->LengthMm() < 20.0 || junction < 10.0 || iliac.LengthMm() - junction < 10.0)
+  if (!internal || internal->Size() < 2)
     return junction;
-  const std::vector<Line> axes = { Chord(iliac, std::max(0.0, junction - 25.0), junction - 5.0),
-                                   Chord(iliac, junction + 5.0, std::min(iliac.LengthMm(), junction + 25.0)),
-                                   Chord(*internal, 5.0, 20.0) };
+  // Within about the two vessels' radii of the junction the skeleton bends into the merged
+  // cross-section: the chords start beyond that.
+  const double skip =
+    std::max(minimumSkipMm, RadiusAt(iliac, junction - chordMm) + RadiusAt(*internal, minimumSkipMm + chordMm));
+  if (internal->LengthMm() < skip + chordMm || junction < skip + 5.0 || iliac.LengthMm() - junction < skip + 5.0)
+    return junction;
+  const std::vector<Line> axes = { Chord(iliac, std::max(0.0, junction - skip - chordMm), junction - skip),
+                                   Chord(iliac, junction + skip, std::min(iliac.LengthMm(), junction + skip + chordMm)),
+                                   Chord(*internal, skip, skip + chordMm) };
   const Point3 origin = NearestToLines(axes);
   if (!origin.allFinite() || (origin - PositionAt(iliac, junction)).norm() > snapMm)
     return junction;

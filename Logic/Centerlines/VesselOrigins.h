@@ -5,11 +5,14 @@
 /// daughters (2–4 mm on our phantoms), so lengths to it read long.
 ///
 ///  - **Internal iliac origin** (per side): the point nearest (least squares) to the axes of the
-///    common iliac above the skeleton's junction (chord 25…5 mm before it), the external iliac
-///    below it (5…25 mm after) and the internal iliac (its centerline 5…20 mm from the
-///    junction), projected onto the iliac's centerline. The junction itself when a chord is too
-///    short (iliac < 10 mm either side of it, internal iliac < 20 mm) or the axes meet farther
-///    than 10 mm from it; NaN when no internal iliac was labelled.
+///    common iliac above the skeleton's junction, the external iliac below it and the internal
+///    iliac, projected onto the iliac's centerline. Each axis is a 15 mm chord that starts `d`
+///    from the junction, d = max(5 mm, r_common + r_internal) (the common iliac's inscribed radius
+///    15 mm above the junction, the internal iliac's 20 mm from it): within about the two radii
+///    the skeleton bends into the merged cross-section (with a fixed 5 mm, a 14 mm iliac's origin
+///    read 2 mm off). The junction itself when a chord does not fit (iliac < d + 5 mm either side
+///    of it, internal iliac < d + 15 mm) or the axes meet farther than 10 mm from it; NaN when no
+///    internal iliac was labelled.
 ///  - **Aortic bifurcation** B: the point nearest to the axes of the distal aorta (chord 25…5 mm
 ///    above the skeleton's junction) and of both common iliacs (chords from min(10 mm, half the
 ///    stretch) to min(30 mm, internal iliac origin − 5 mm) below it); the junction when an iliac

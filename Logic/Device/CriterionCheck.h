@@ -5,7 +5,8 @@
 /// The margin is in the criterion's unit and positive inside the requirement: value − min for
 /// "≥ min", max − value for "≤ max", and the smaller of the two for a range, so −3 mm means
 /// 3 mm short. A criterion whose measurement is NaN (not measured) is indeterminate, with a NaN
-/// margin. Limits are inclusive. The text reads, e.g.:
+/// margin; one whose margin lies within its measurement's uncertainty (SelectDevice: the neck
+/// length) is indeterminate too and keeps its margin. Limits are inclusive. The text reads, e.g.:
 ///   "neck length 12.0 mm, needs ≥ 15 mm: −3.0 mm"
 ///   "neck angle β 50.0°, needs ≤ 60°: +10.0°"
 ///   "main body oversizing 13.6 %, needs 10–20 %: +3.6 %"
@@ -38,7 +39,7 @@ struct CriterionCheck
   std::string unit;                                         ///< "mm", "deg" or "%"
   double min = std::numeric_limits<double>::quiet_NaN();    ///< requirement's lower limit; NaN: none
   double max = std::numeric_limits<double>::quiet_NaN();    ///< requirement's upper limit; NaN: none
-  double margin = std::numeric_limits<double>::quiet_NaN(); ///< signed, unit; NaN when indeterminate
+  double margin = std::numeric_limits<double>::quiet_NaN(); ///< signed, unit; NaN when not decidable
   std::string requirement;                                  ///< e.g. "≥ 15 mm (β ≤ 75°)"
   std::string text;                                         ///< the one-line summary above
   std::string evidence;                                     ///< the catalogue's evidence mark for this criterion

@@ -115,6 +115,17 @@ CriterionCheck NeckLengthCheck(const DeviceIfu& ifu, double lengthMm, double bet
   return check;
 }
 
+/// A decided check whose margin lies within ±`uncertainty` of its limit becomes indeterminate:
+/// the measurement cannot tell which side of the limit the anatomy is on.
+void WithinUncertainty(CriterionCheck& check, double uncertainty)
+{
+  if (check.status == CheckStatus::Indeterminate || !(uncertainty > 0.0) || std::abs(check.margin) > uncertainty)
+    return;
+  check.status = CheckStatus::Indeterminate;
+  check.text +=
+    ", within the measurement's uncertainty (±" + QuantityText(uncertainty, check.unit) + "): indeterminate";
+}
+
 CriterionCheck WithEvidence(CriterionCheck check, const std::string& evidence)
 {
   check.evidence = evidence;
@@ -213,6 +224,7 @@ FamilyEvaluation EvaluateFamily(const SizingAnatomy& a,
   e.checks.push_back(WithEvidence(
     CheckCriterion("neck diameter 15 mm below", a.neckDiameter15mmMm, neck.min, neck.max, "mm"), neck.evidence));
   e.checks.push_back(NeckLengthCheck(ifu, a.proximalNeckLengthMm, a.neckAngleBetaDeg));
+  WithinUncertainty(e.checks.back(), a.proximalNeckLengthUncertaintyMm);
   e.checks.push_back(
     WithEvidence(CheckCriterion("neck angle β", a.neckAngleBetaDeg, NaN, ifu.neckLengthTiers.back().maxBetaDeg, "deg"),
                  ifu.neckLengthEvidence));
@@ -402,6 +414,7 @@ SizingAnatomy SizingFromMeasurements(const Measurements& m)
   a.rightAccessMinDiameterMm = m.Value("rightAccessMinDiameter");
   a.leftAccessMinDiameterMm = m.Value("leftAccessMinDiameter");
   a.proximalSiteToBifurcationLengthMm = m.Value("proximalSiteToBifurcationLength");
+  a.proximalNeckLengthUncertaintyMm = NeckLengthUncertaintyMm;
   return a;
 }
 

@@ -14,7 +14,8 @@
 /// a measurement it needs is NaN, with signed margin), in this order and with these names:
 ///   "main body oversizing", "neck diameter", "neck diameter 15 mm below" (the IFU range holds
 ///   along the seal zone), "neck length" (the tier admitting β; with β unmeasured it passes
-///   above every tier, fails below every tier, else is indeterminate), "neck angle β" (≤ the
+///   above every tier, fails below every tier, else is indeterminate; and indeterminate when its
+///   margin lies within ±proximalNeckLengthUncertaintyMm of the limit), "neck angle β" (≤ the
 ///   largest tier angle), "neck angle α" (only for families that limit it), then per side
 ///   ("right …", "left …"): "iliac diameter", "limb oversizing", "iliac seal length"; then
 ///   "main-body access" (the main body goes up the side with the wider access vessel: its
@@ -68,6 +69,9 @@ struct SizingAnatomy
   double rightAccessMinDiameterMm = NotMeasured;          ///< minimum external iliac lumen diameter, > 0
   double leftAccessMinDiameterMm = NotMeasured;           ///< > 0
   double proximalSiteToBifurcationLengthMm = NotMeasured; ///< along the centerline, ≥ 0
+  /// How far the measured neck length may lie from the true one, mm (≥ 0; 0 for an exact
+  /// input): a neck-length margin within it is indeterminate — neither pass nor fail.
+  double proximalNeckLengthUncertaintyMm = 0.0;
 };
 
 struct DeviceSelectionParams
@@ -123,9 +127,10 @@ struct DeviceSelection
 };
 
 /// The sizing inputs from the measurement stage (MeasureAnatomy.h; lumen diameters): (a), (b),
-/// neck length, β, α, (e), (f), access minimum diameters, site to bifurcation; each iliac's seal
-/// length is its common iliac length, bifurcation to internal iliac origin — the most a limb can
-/// seal in. A value the stage could not measure stays NaN.
+/// neck length with its uncertainty (NeckLengthUncertaintyMm), β, α, (e), (f), access minimum
+/// diameters, site to bifurcation; each iliac's seal length is its common iliac length,
+/// bifurcation to internal iliac origin — the most a limb can seal in. A value the stage could
+/// not measure stays NaN.
 SizingAnatomy SizingFromMeasurements(const Measurements& measurements);
 
 /// (deviceDiameterMm / vesselDiameterMm − 1) × 100.

@@ -87,6 +87,12 @@ nlohmann::json MeasurementsToJson(const Measurements& measurements)
                           { "renal", site.renal } };
   out["aorticBifurcation"] = { { "lps", JsonPoint(measurements.bifurcationLps) },
                                { "abscissaMm", measurements.bifurcationAbscissaMm } };
+  for (int side = 0; side < 2; ++side)
+  {
+    const Point3& origin = measurements.internalIliacOriginLps[side];
+    out[side == 0 ? "rightInternalIliacOrigin" : "leftInternalIliacOrigin"] =
+      origin.allFinite() ? nlohmann::json{ { "lps", JsonPoint(origin) } } : nlohmann::json(nullptr);
+  }
   nlohmann::json values = nlohmann::json::array();
   for (const Measurement& m : measurements.values)
   {

@@ -312,6 +312,10 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
                     bifurcation.abscissaMm,
                     { InternalIliacOriginAbscissa(tree, 0), InternalIliacOriginAbscissa(tree, 1) } };
 
+  for (int side = 0; side < 2; ++side)
+    if (std::isfinite(c.internalIliacAbscissa[side]))
+      out.internalIliacOriginLps[side] = PositionAt(*c.iliac[side], c.internalIliacAbscissa[side]);
+
   const auto [a, b] = MeasureNeckDiameters(c, out);
   const std::size_t widest = MeasureSacDiameters(c, out);
   for (int side = 0; side < 2; ++side)

@@ -165,7 +165,13 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   sizing.distalNeckMinDiameter = 2 * rDistal;
   sizing.rightIliacDiameter = p.rightIliacDiameterMm;
   sizing.leftIliacDiameter = p.leftIliacDiameterMm;
-  sizing.proximalNeckLength = p.neckLengthMm;
+  // The clinical neck length (vessel-wall.md, the rule-engine convention): from the site to the
+  // first level where the diameter exceeds (a) by 10 %; past the sac's top by the shoulder's
+  // rise (about 1.6 mm on the default sac), found on the exact radius profile to 1 µm.
+  double z10 = sacTop;
+  while (z10 > sacBottom && radiusAtZ(z10) < 1.1 * rNeck)
+    z10 -= 0.001;
+  sizing.proximalNeckLength = siteZ - z10;
   sizing.proximalSiteToBifurcationLength = siteZ;
   sizing.rightIliacLength = commonIliacLengthMm;
   sizing.leftIliacLength = commonIliacLengthMm;

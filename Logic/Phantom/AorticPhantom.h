@@ -56,7 +56,7 @@ struct PhantomParams
   std::array<int, 3> sizeVoxels{ 0, 0, 0 }; ///< 0,0,0 = fit the anatomy
 
   double neckDiameterMm = 22.0;
-  double neckLengthMm = 25.0;
+  double neckLengthMm = 25.0; ///< lowest renal lower edge to the sac's top (the shoulder)
   double maxAneurysmDiameterMm = 55.0;
   double aneurysmLengthMm = 80.0;
   double distalNeckDiameterMm = 18.0;
@@ -111,7 +111,9 @@ struct PhantomSizing
   double distalNeckMinDiameter = 0.0; ///< (d) between the sac and the bifurcation
   double rightIliacDiameter = 0.0;    ///< (e) common iliac
   double leftIliacDiameter = 0.0;     ///< (f)
-  double proximalNeckLength = 0.0;    ///< lowest renal lower edge to the sac's top
+  /// Lowest renal lower edge to the first level where the diameter exceeds (a) by 10 % (the
+  /// clinical rule; neckLengthMm plus the shoulder's rise to 110 % of the neck)
+  double proximalNeckLength = 0.0;
   double proximalSiteToBifurcationLength = 0.0;
   double rightIliacLength = 0.0; ///< aortic bifurcation to the right internal iliac origin
   double leftIliacLength = 0.0;

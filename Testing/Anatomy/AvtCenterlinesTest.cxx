@@ -4,6 +4,7 @@
 // at the top of the scan to 300 HU at its bottom (the bolus), soft tissue 40 HU, noise σ 15 HU from
 // std::mt19937(case number) — and the pipeline runs from the case's seed. The labelled Y must come
 // out on every case, with the iliacs on the patient's sides.
+#include <algorithm>
 #include <fstream>
 #include <random>
 #include <regex>
@@ -135,6 +136,28 @@ TEST_P(AvtCase, MeasureModeStentSurfaceSettlesOnTheWallAndMeasuresPlausibly)
     EXPECT_LT(m.Value(length), 100.0) << length;
   }
   EXPECT_GT(m.Value("proximalSiteToBifurcationLength"), 50.0);
+
+  // The README's claims about these cases. D1 and D4 are chest scans whose renal arteries the
+  // masks do not label: their site is the top of the aorta, and a warning says so.
+  const bool chest = name == "D1" || name == "D4";
+  EXPECT_EQ(plan.site.source, chest ? ProximalSiteSource::Top : ProximalSiteSource::Renal);
+  const auto warned = [&](const std::string& part)
+  {
+    return std::any_of(m.warnings.begin(), m.warnings.end(),
+                       [&](const std::string& w) { return w.find(part) != std::string::npos; });
+  };
+  if (chest)
+  {
+    ASSERT_FALSE(plan.site.warning.empty());
+    EXPECT_TRUE(warned(plan.site.warning)) << plan.site.warning;
+  }
+  // D4's tortuous right iliac folds the fitted rings of its landing zone: (e) is the centerline's
+  // inscribed diameter there, the definition says so, and a warning names the value.
+  const Measurement* e = m.Find("rightIliacDiameter");
+  ASSERT_NE(e, nullptr);
+  const bool fallback = e->definition.find("inscribed-sphere diameter of the centerline") != std::string::npos;
+  EXPECT_EQ(fallback, name == "D4") << e->definition;
+  EXPECT_EQ(warned("rightIliacDiameter is the centerline's inscribed diameter"), name == "D4");
 }
 
 INSTANTIATE_TEST_SUITE_P(RealAnatomy, AvtCase, ::testing::Values("D1", "D2", "D3", "D4"));

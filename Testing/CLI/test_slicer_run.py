@@ -318,9 +318,12 @@ def check_centerlines(centerlines_path, landmarks_path, files):
     found = {p["label"]: p["position"] for p in node["controlPoints"]}
     if check("aorticBifurcation" in found, "landmarks include aorticBifurcation", str(list(found))):
         error = np.linalg.norm(np.array(found["aorticBifurcation"]) - np.array(truth["landmarks"]["aorticBifurcation"]))
-        # 5 mm: the skeleton branches where the inscribed sphere meets the crotch, a few mm above
-        # the point where the analytic axes meet (about half the distal-neck radius).
-        check(error < 5.0, "aorticBifurcation within 5 mm of the phantom's", f"{error:.2f} mm")
+        # The landmark is the skeleton's junction, inside the merged cross-section, 2-3 mm below
+        # the point where the analytic axes meet (the lengths use the refined point, which
+        # test_measurements_cli.py checks to 1 mm); 4 mm bounds it with a millimetre to spare.
+        check(error < 4.0, "aorticBifurcation (skeleton junction) within 4 mm of the phantom's", f"{error:.2f} mm")
+        low = found["aorticBifurcation"][2] - truth["landmarks"]["aorticBifurcation"][2]
+        check(low < 0.0, "the skeleton junction lies below (inferior to) the branching point", f"dz {low:+.2f} mm")
 
 
 def check_stent(stent_path, returned, files):

@@ -26,6 +26,53 @@ double MeanRadius(const StentMesh& mesh, const ActiveContourResult& r, int segme
   return sum / count;
 }
 
+/// The unit vector from vertex i's centerline point toward `v` within its ring's plane (the balloon's n).
+Eigen::Vector3d RadialDirection(const StentMesh& mesh, Eigen::Index i, const Point3& v)
+{
+  const Eigen::Vector3d a = mesh.axis.row(i).transpose();
+  const Eigen::Vector3d d = v - mesh.centre.row(i).transpose();
+  return (d - d.dot(a) * a).normalized();
+}
+
+/// How far `v` lies from vertex i's ring plane, along the ring's axis (mm).
+double AxialOffset(const StentMesh& mesh, Eigen::Index i, const Point3& v)
+{
+  return (v - mesh.centre.row(i).transpose()).dot(mesh.axis.row(i).transpose());
+}
+
+/// The distance along the unit vector `n` from `origin` (in the lumen) to where φ first turns
+/// positive: the wall a vertex moving along n alone meets. Steps of 0.05 mm, a sixteenth of the
+/// 0.8 mm voxel (no lumen here is thinner), then bisection.
+double DistanceToWall(const WallDistanceField& wall, const Point3& origin, const Eigen::Vector3d& n)
+{
+  constexpr double step = 0.05;
+  double inside = 0.0;
+  while (inside < 50.0 && wall.Sample(origin + (inside + step) * n) < 0.0)
+    inside += step;
+  double outside = inside + step;
+  for (int k = 0; k < 30; ++k)
+  {
+    const double mid = 0.5 * (inside + outside);
+    (wall.Sample(origin + mid * n) < 0.0 ? inside : outside) = mid;
+  }
+  return inside;
+}
+
+/// Steps of a run in which the energy rose (beyond rounding).
+int EnergyRises(const ActiveContourResult& r)
+{
+  int rises = 0;
+  for (std::size_t i = 1; i < r.energy.size(); ++i)
+    rises += r.energy[i] > r.energy[i - 1] + 1e-12 * std::abs(r.energy.front()) ? 1 : 0;
+  return rises;
+}
+
+/// Where the balloon and the wall force balance past a wall (φ > 0, within δ): w_wall·φ/δ = c·p·(R − r).
+double ContactPenetration(const ActiveContourParams& p, double contactFactor, double R, double r)
+{
+  return p.wallSofteningMm * contactFactor * p.balloonPressure * (R - r) / p.wallWeight;
+}
+
 class YPhantomFit : public ::testing::Test
 {
 protected:
@@ -163,6 +210,179 @@ TEST(ActiveContour, ParameterOutOfRange_InputError)
   empty->SetRegions(region);
   empty->Allocate(true);
   EXPECT_THROW(WallDistanceField::FromLumen(*empty), InputError);
+}
+
+// Radial-only wall force (header: the wall force acts back along −n, with the magnitude of ∇D). The
+// trunk is a straight tube on the 0.8 mm grid, so its wall is a voxel staircase. Pushed back along
+// its ring's radius, a vertex keeps to its column (only the weak internal forces turn it) and stops
+// where the column's own ray meets the wall (plus the contact balance past it). Pushed along −∇D instead,
+// the staircase's tangential parts slide vertices sideways into its outward pockets (+0.16 mm on
+// every radius) and the run never settles.
+TEST_F(YPhantomFit, MeasureModeOnTheVoxelStaircase_TrunkVerticesKeepToTheirColumns)
+{
+  const ActiveContourParams p = ActiveContourParams::Measure();
+  const double penetration = ContactPenetration(p, p.contactPressureFactor, p.balloonRadiusMm[TrunkSegment], 10.0);
+  double maxTurnDeg = 0.0, maxOff = 0.0, sumOff = 0.0;
+  int count = 0;
+  for (Eigen::Index i = 0; i < mesh->V.rows(); ++i)
+  {
+    // The trunk's rings, the two nearest the junction aside (where the lumen widens into the Y).
+    if (mesh->segment[i] != TrunkSegment || mesh->ring[i] >= mesh->RingsIn(TrunkSegment) - 2)
+      continue;
+    const Eigen::Vector3d column = RadialDirection(*mesh, i, mesh->V.row(i).transpose());
+    const Eigen::Vector3d fitted = RadialDirection(*mesh, i, measure->V.row(i).transpose());
+    maxTurnDeg = std::max(maxTurnDeg, std::acos(std::min(1.0, column.dot(fitted))) * 180.0 / std::acos(-1.0));
+    const double off =
+      measure->radiusMm[i] - DistanceToWall(*wall, mesh->centre.row(i).transpose(), column) - penetration;
+    maxOff = std::max(maxOff, std::abs(off));
+    sumOff += off;
+    ++count;
+  }
+  EXPECT_TRUE(measure->converged);
+  // 2°: well under half a staircase step (a voxel is 4.6° of the ring at 10 mm), which is how far
+  // a slide into a pocket turns a vertex; the internal forces alone turn one by less than 1°.
+  EXPECT_LT(maxTurnDeg, 2.0);
+  // An eighth of a voxel (0.1 mm) for any vertex: the ring's stiffness shaves the staircase's
+  // corners by a few hundredths; the pockets lie up to half a voxel out.
+  EXPECT_LT(maxOff, 0.1);
+  // A sixteenth of a voxel (0.05 mm) on average: a third of the bias the gradient would add.
+  EXPECT_LT(std::abs(sumOff / count), 0.05);
+}
+
+// The Huber ramp δ (wallSofteningMm): the explicit wall force grows over the first δ past the wall,
+// so that a step (τ·w_wall/δ = 0.75 ≤ 1) moves a vertex back by less than its penetration. With δ a
+// tenth of τ·w_wall, a vertex that has just touched the wall is thrown back inside by up to
+// τ·w_wall = 0.75 mm, and the balloon pushes it out again: it chatters across the wall, the energy
+// rises in many steps and the run does not converge.
+TEST_F(YPhantomFit, MeasureModeWithTheWallForceRamp_SettlesInsteadOfChattering)
+{
+  EXPECT_TRUE(measure->converged);
+  EXPECT_EQ(EnergyRises(*measure), 0);
+  double maxAbsPhi = 0.0;
+  for (Eigen::Index i = 0; i < mesh->V.rows(); ++i)
+    if (mesh->segment[i] == TrunkSegment && mesh->ring[i] < mesh->RingsIn(TrunkSegment) - 2)
+      maxAbsPhi = std::max(maxAbsPhi, std::abs(measure->wallDistanceMm[i]));
+  // Twice the contact balance 0.1·δ·p(R − r)/w_wall (0.02 mm): every trunk vertex rests on the wall.
+  EXPECT_LT(maxAbsPhi, 0.04);
+
+  auto p = ActiveContourParams::Measure();
+  p.wallSofteningMm = 0.1 * p.tau * p.wallWeight; // τ·w_wall/δ = 10
+  const ActiveContourResult hard = FitActiveContour(*mesh, *wall, p);
+  double hardMaxAbsPhi = 0.0;
+  for (Eigen::Index i = 0; i < mesh->V.rows(); ++i)
+    if (mesh->segment[i] == TrunkSegment && mesh->ring[i] < mesh->RingsIn(TrunkSegment) - 2)
+      hardMaxAbsPhi = std::max(hardMaxAbsPhi, std::abs(hard.wallDistanceMm[i]));
+  EXPECT_FALSE(hard.converged);
+  // The same bar: the chatter leaves trunk vertices farther off the wall when the run stops.
+  EXPECT_GT(hardMaxAbsPhi, 0.04);
+  // A tenth of the steps: a run that only creeps never raises its energy; a chattering one does
+  // whenever a step overshoots.
+  EXPECT_GT(EnergyRises(hard), hard.iterations / 10);
+}
+
+// Contact pressure (contactPressureFactor, 0.1 in measure mode): once a vertex has passed the wall,
+// the balloon keeps a tenth of its pressure, so the surface rests 0.1·δ·p(R − r)/w_wall (0.02 mm)
+// past the wall. With the full pressure it would rest δ·p(R − r)/w_wall = 0.2 mm past it — a quarter
+// voxel on every radius.
+TEST_F(YPhantomFit, MeasureModeAfterContact_SurfaceRestsJustPastTheWall)
+{
+  auto fullPressure = ActiveContourParams::Measure();
+  fullPressure.contactPressureFactor = 1.0;
+  const ActiveContourResult pressed = FitActiveContour(*mesh, *wall, fullPressure);
+  const ActiveContourParams p = ActiveContourParams::Measure();
+  const double vesselRadius[3] = { 10.0, 6.0, 6.0 };
+  for (int segment = 0; segment < 3; ++segment)
+  {
+    // Trunk: the two rings nearest the junction aside; legs: the two nearest the flow divider aside.
+    const int first = segment == TrunkSegment ? 0 : 2;
+    const int last = segment == TrunkSegment ? mesh->RingsIn(segment) - 2 : mesh->RingsIn(segment);
+    double heldPhi = 0.0, pressedPhi = 0.0;
+    int count = 0;
+    for (Eigen::Index i = 0; i < mesh->V.rows(); ++i)
+      if (mesh->segment[i] == segment && mesh->ring[i] >= first && mesh->ring[i] < last)
+      {
+        heldPhi += measure->wallDistanceMm[i];
+        pressedPhi += pressed.wallDistanceMm[i];
+        ++count;
+      }
+    const double R = p.balloonRadiusMm[segment];
+    // 0.01 mm: the rings' own stiffness (weights 0.005) holds them a few thousandths inside the balance.
+    EXPECT_NEAR(heldPhi / count, ContactPenetration(p, p.contactPressureFactor, R, vesselRadius[segment]), 0.01)
+      << "segment " << segment;
+    EXPECT_NEAR(pressedPhi / count, ContactPenetration(p, 1.0, R, vesselRadius[segment]), 0.01)
+      << "segment " << segment;
+  }
+}
+
+// The ring-plane spring k_a. Simulate mode below the vessel radius: the stent touches no wall, so
+// nothing but the spring holds it along the vessel while the stiff weights' membrane term shortens
+// every s-chain. With the spring the run settles within a few hundred steps, each segment's middle
+// ring near its plane; without it the surface creeps along the vessel for thousands of steps.
+TEST_F(YPhantomFit, SimulateModeWithTheRingPlaneSpring_StaysWhereItWasPlaced)
+{
+  auto params = ActiveContourParams::Simulate({ 16.0, 8.0, 8.0 });
+  const ActiveContourResult held = FitActiveContour(*mesh, *wall, params);
+  params.ringPlaneWeight = 0.0;
+  const ActiveContourResult loose = FitActiveContour(*mesh, *wall, params);
+  EXPECT_TRUE(held.converged);
+  EXPECT_FALSE(loose.converged);  // still creeping after the default 3000 steps
+  const double ringSpacing = 4.0; // StentMeshParams' default
+  for (int segment = 0; segment < 3; ++segment)
+  {
+    const int k = mesh->RingsIn(segment) / 2;
+    double heldOff = 0.0, looseOff = 0.0;
+    for (int j = 0; j < mesh->verticesPerRing; ++j)
+    {
+      const int i = mesh->Id(segment, k, j);
+      heldOff = std::max(heldOff, std::abs(AxialOffset(*mesh, i, held.V.row(i).transpose())));
+      looseOff = std::max(looseOff, std::abs(AxialOffset(*mesh, i, loose.V.row(i).transpose())));
+    }
+    // Half a ring spacing: the middle ring stays nearer its own place than its neighbours'.
+    EXPECT_LT(heldOff, 0.5 * ringSpacing) << "segment " << segment;
+    // Several ring spacings: without the spring the rings have crept past their neighbours' places.
+    EXPECT_GT(looseOff, 3.0 * ringSpacing) << "segment " << segment;
+  }
+}
+
+// The crotch mid-plane as a wall for each leg's medial side (StentMesh::crotchPoint, crotchNormal).
+// The two leg rings nearest the crotch lie where the two iliac lumens overlap: without the plane
+// their medial vertices would cross into the other leg's lumen. With it they stop at the plane (the
+// contact balance past it), and every vertex of those rings lies where its ray meets the nearer of
+// the plane and the wall.
+TEST_F(YPhantomFit, MeasureModeAtTheCrotch_FirstLegRingsStopAtTheMidPlane)
+{
+  double maxBeyond = -1e9, maxOff = 0.0;
+  int medialCount = 0;
+  for (int segment : { RightLegSegment, LeftLegSegment })
+  {
+    const Eigen::Vector3d m = segment == RightLegSegment ? mesh->crotchNormal : Eigen::Vector3d(-mesh->crotchNormal);
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < mesh->verticesPerRing; ++j)
+      {
+        const int i = mesh->Id(segment, k, j);
+        const Point3 v = measure->V.row(i).transpose();
+        const Eigen::Vector3d n = RadialDirection(*mesh, i, v);
+        // The vertex's own cross-section (the first rings sit up to 2 mm off their plane).
+        const Point3 origin =
+          mesh->centre.row(i).transpose() + AxialOffset(*mesh, i, v) * mesh->axis.row(i).transpose();
+        double expected = DistanceToWall(*wall, origin, n);
+        if (n.dot(m) > 0.0) // medial
+        {
+          expected = std::min(expected, (mesh->crotchPoint - origin).dot(m) / n.dot(m));
+          maxBeyond = std::max(maxBeyond, (v - mesh->crotchPoint).dot(m));
+          ++medialCount;
+        }
+        const double off = measure->radiusMm[i] - expected;
+        maxOff = std::max(maxOff, std::abs(off));
+      }
+  }
+  EXPECT_GT(medialCount, 0); // the plane does cut these rings
+  // 0.05 mm: the plane holds a vertex like the wall, 0.1·δ·p(R − r)/w_wall (0.02 mm) past it, with
+  // as much again for the ring's stiffness where the plane meets the wall.
+  EXPECT_LT(maxBeyond, 0.05);
+  // A quarter voxel, the bar for a radius here: the contact balance (0.02 mm) and the rounding of
+  // the ring where the plane meets the wall (under 0.1 mm).
+  EXPECT_LT(maxOff, quarterVoxel);
 }
 
 } // namespace

@@ -1,6 +1,8 @@
 // Tests of the synthetic phantom: its labels and intensities agree with its analytic geometry
 // on any grid, and its truth is what the sizing definitions say.
 #include <Eigen/Geometry>
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "Common/Errors.h"
@@ -62,7 +64,17 @@ TEST(AorticPhantom, SizingTruth_FromTheRadiusProfile)
   // The sac's blend from 11 to 9 mm radius moves the maximum 0.9 mm off mid-sac: +0.023 mm.
   EXPECT_NEAR(s.maxAneurysmDiameter, 55.0, 0.03);
   EXPECT_DOUBLE_EQ(s.distalNeckMinDiameter, 18.0);
-  EXPECT_DOUBLE_EQ(s.proximalNeckLength, 9.0);
+  // The neck ends where the diameter first exceeds (a) by 10 %: 11 mm radius → 12.1 mm, reached
+  // at u = (sacTop − z) / 80 mm with 11 − 2u + 17.5 sin(πu) = 12.1 (the sac's blend and half-sine
+  // bump) — solved here by bisection, independently of the generator's 1 µm stepping.
+  double lo = 0.0, hi = 0.5;
+  for (int i = 0; i < 60; ++i)
+  {
+    const double u = 0.5 * (lo + hi);
+    (11.0 - 2.0 * u + 17.5 * std::sin(M_PI * u) < 12.1 ? lo : hi) = u;
+  }
+  EXPECT_NEAR(s.proximalNeckLength, 9.0 + 80.0 * lo, 0.002); // the generator steps 1 µm along the axis
+  EXPECT_GT(s.proximalNeckLength, 10.0);                     // a 9 mm shoulder is a 10.6 mm neck by the 10 % rule
   EXPECT_DOUBLE_EQ(s.proximalSiteToBifurcationLength, 20.0 + 80.0 + 9.0);
   const PhantomVessel& aorta = Vessel(phantom, "aorta");
   EXPECT_NEAR(2 * aorta.radiusMm.maxCoeff(), s.maxAneurysmDiameter, 0.02); // 1 mm samples near the top

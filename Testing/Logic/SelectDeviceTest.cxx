@@ -192,6 +192,34 @@ TEST(SelectDevice, NineMmNeck_FailsNeckLengthByOneAndSixMm)
   EXPECT_NE(std::find(s.reasons.begin(), s.reasons.end(), "FifteenMm: " + fifteen.text), s.reasons.end());
 }
 
+TEST(SelectDevice, NeckLengthWithinItsUncertainty_IndeterminateOnBothSidesOfTheLimit)
+{
+  // TenMm needs ≥ 10 mm (β 30° ≤ 60°); with a ±2 mm measurement the band 8–12 mm cannot be decided.
+  SizingAnatomy a = MakeGoodAnatomy();
+  a.proximalNeckLengthUncertaintyMm = 2.0;
+  const std::map<double, CheckStatus> expected = {
+    { 7.9, CheckStatus::Fail },           // 2.1 mm short: short whatever the error
+    { 8.1, CheckStatus::Indeterminate },  // 1.9 mm short: might be long enough
+    { 10.0, CheckStatus::Indeterminate }, // on the limit
+    { 11.9, CheckStatus::Indeterminate }, // 1.9 mm over: might be short
+    { 12.1, CheckStatus::Pass },          // 2.1 mm over: long enough whatever the error
+  };
+  for (const auto& [lengthMm, status] : expected)
+  {
+    a.proximalNeckLengthMm = lengthMm;
+    const CriterionCheck c = Check(Family(SelectDevice(a, MakeTestCatalog()), "TenMm"), "neck length");
+    EXPECT_EQ(c.status, status) << c.text;
+    EXPECT_NEAR(c.margin, lengthMm - 10.0, ExactMm) << c.text; // the margin is kept either way
+  }
+  a.proximalNeckLengthMm = 11.0;
+  EXPECT_EQ(Check(Family(SelectDevice(a, MakeTestCatalog()), "TenMm"), "neck length").text,
+            "neck length 11.0 mm, needs ≥ 10 mm (β ≤ 60°): +1.0 mm, within the measurement's uncertainty "
+            "(±2.0 mm): indeterminate");
+  // An exact input (uncertainty 0, the default) decides at the limit itself.
+  a.proximalNeckLengthUncertaintyMm = 0.0;
+  EXPECT_EQ(Check(Family(SelectDevice(a, MakeTestCatalog()), "TenMm"), "neck length").status, CheckStatus::Pass);
+}
+
 TEST(SelectDevice, ShippedCatalogue_NineMmNeckMarginsPerFamily)
 {
   SizingAnatomy a = MakeGoodAnatomy();
