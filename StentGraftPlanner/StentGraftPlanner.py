@@ -5,8 +5,9 @@ background (segmentation, centerlines, fitted stent surface, measurements, devic
 the simulated graft), then its outputs are shown in the views, the measurements table and the
 device recommendation in the panel, and the diameter profile in a plot.
 
-This file holds only what needs Slicer; the settings, the CLI parameter dictionary, the reading
-of the CLI's results and the colours are in StentGraftPlannerLib (plain Python, tested in CTest).
+This file holds only what needs Slicer; the settings, the CLI parameter dictionary, the start and
+the following of a CLI run, the reading of the CLI's results and the colours are in
+StentGraftPlannerLib (plain Python, tested in CTest).
 """
 
 import json
@@ -26,7 +27,7 @@ from slicer.ScriptedLoadableModule import (
 )
 from slicer.util import VTKObservationMixin
 
-from StentGraftPlannerLib import Appearance, Results, Settings
+from StentGraftPlannerLib import Appearance, CliRun, Results, Settings
 
 
 class StentGraftPlanner(ScriptedLoadableModule):
@@ -34,7 +35,9 @@ class StentGraftPlanner(ScriptedLoadableModule):
         ScriptedLoadableModule.__init__(self, parent)
         self.parent.title = "Stent Graft Planner"
         self.parent.categories = ["Vascular"]
-        self.parent.dependencies = ["StentGraftSimulation"]
+        # Not the StentGraftSimulation CLI: under --disable-cli-modules (Slicer's generic module
+        # tests) Slicer would refuse to load this module. The CLI is looked up when a run starts.
+        self.parent.dependencies = []
         self.parent.contributors = ["StentGraftPlanner developers"]
         self.parent.helpText = (
             "Plans the endovascular repair of an abdominal aortic aneurysm from a CT angiography volume: "
@@ -111,9 +114,18 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
         self.initializeParameterNode()
 
     def cleanup(self):
-        if self._run is not None:
-            self._run.cliNode.Cancel()
+        self._abandonRun()
         self.removeObservers()
+
+    def _abandonRun(self, statusText=None):
+        """Cancel the run in flight, if any, and forget it (the scene closes or the panel goes)."""
+        if self._run is None:
+            return
+        self.logic.abandonPlanning(self._run)
+        self._run = None
+        if statusText is not None:
+            self.ui.progressBar.hide()
+            self.ui.statusLabel.text = statusText
 
     def enter(self):
         self.initializeParameterNode()
@@ -123,6 +135,8 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
             self.removeObserver(self._parameterNode, vtk.vtkCommand.ModifiedEvent, self.updateGUIFromParameterNode)
 
     def onSceneStartClose(self, caller, event):
+        # Before the scene removes the run's output nodes: Slicer's CLI logic would read into them.
+        self._abandonRun("The planning run was cancelled: the scene was closed.")
         self.setParameterNode(None)
 
     def onSceneEndClose(self, caller, event):
@@ -213,17 +227,6 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
         self.ui.resultsCollapsibleButton.collapsed = False
 
 
-class PlanningRun:
-    """One CLI run in flight: its CLI node, the temporary report path and the parameter node."""
-
-    def __init__(self, cliNode, reportPath, parameterNode):
-        self.cliNode = cliNode
-        self.reportPath = reportPath
-        self.parameterNode = parameterNode
-        self.observers = []
-        self.finishing = False
-
-
 class PlanningResults:
     """What a finished run returned: return values, the parsed report and the panel text."""
 
@@ -250,13 +253,13 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
 
     def bundledCatalogPath(self):
         """The devices.json installed beside the CLI (the CLI's default catalogue)."""
-        return os.path.join(os.path.dirname(slicer.modules.stentgraftsimulation.path), "devices.json")
+        return os.path.join(os.path.dirname(CliRun.cliModule(slicer.modules).path), "devices.json")
 
     def deviceFamilies(self):
         try:
             with open(self.bundledCatalogPath()) as catalog:
                 return Settings.catalogFamilies(catalog.read())
-        except (OSError, ValueError):
+        except (OSError, ValueError, RuntimeError):  # RuntimeError: the CLI is not loaded; Apply says so
             return list(Settings.FALLBACK_DEVICE_FAMILIES)
 
     def _referencedNode(self, parameterNode, role, nodeClass, name):
@@ -290,13 +293,15 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
         reportPath = self._newReportPath()
         try:
             parameters = self.cliParameters(parameterNode, reportPath)
+            cliNode = CliRun.startCli(slicer.cli, slicer.modules, parameters, waitForCompletion=False)
         except Exception:
             os.remove(reportPath)
             raise
-        cliNode = slicer.cli.run(slicer.modules.stentgraftsimulation, None, parameters, wait_for_completion=False)
-        run = PlanningRun(cliNode, reportPath, parameterNode)
+        run = CliRun.PlanningRun(cliNode, reportPath, parameterNode)
 
         def finish():
+            if run.abandoned:  # the scene closed after this finish was scheduled
+                return
             results, errorText = None, None
             try:
                 results = self.finishPlanning(run)
@@ -307,17 +312,23 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
             onFinished(results, errorText)
 
         def onModified(caller, event):
-            if cliNode.IsBusy():
-                if onProgress is not None:
-                    onProgress(cliNode.GetProgress(), cliNode.GetStatusString())
-            elif not run.finishing:
+            step = run.step()
+            if step == CliRun.PROGRESS and onProgress is not None:
+                onProgress(cliNode.GetProgress(), cliNode.GetStatusString())
+            elif step == CliRun.FINISH:
                 # Finish outside the CLI node's own event: the node is removed from the scene there.
-                run.finishing = True
                 qt.QTimer.singleShot(0, finish)
 
-        run.observers.append(cliNode.AddObserver(vtk.vtkCommand.ModifiedEvent, onModified))
-        run.observers.append(cliNode.AddObserver(slicer.vtkMRMLCommandLineModuleNode.StatusModifiedEvent, onModified))
+        run.observe((vtk.vtkCommand.ModifiedEvent, slicer.vtkMRMLCommandLineModuleNode.StatusModifiedEvent), onModified)
         return run
+
+    def abandonPlanning(self, run):
+        """Cancel a run started by startPlanning without finishing it (its onFinished is not called)."""
+        run.abandon()
+        try:
+            os.remove(run.reportPath)
+        except OSError:
+            pass  # not written yet, or still held open by the CLI being cancelled: a temporary file
 
     def runPlanning(self, parameterNode):
         """Run the CLI and wait; returns PlanningResults, raises RuntimeError with the CLI's error text."""
@@ -325,8 +336,8 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
         run = None
         try:
             parameters = self.cliParameters(parameterNode, reportPath)
-            cliNode = slicer.cli.runSync(slicer.modules.stentgraftsimulation, None, parameters)
-            run = PlanningRun(cliNode, reportPath, parameterNode)
+            cliNode = CliRun.startCli(slicer.cli, slicer.modules, parameters, waitForCompletion=True)
+            run = CliRun.PlanningRun(cliNode, reportPath, parameterNode)
             return self.finishPlanning(run)
         finally:
             if run is not None:
@@ -335,9 +346,7 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
                 os.remove(reportPath)
 
     def _cleanup(self, run):
-        for tag in run.observers:
-            run.cliNode.RemoveObserver(tag)
-        run.observers = []
+        run.removeObservers()
         slicer.mrmlScene.RemoveNode(run.cliNode)
         if os.path.exists(run.reportPath):
             os.remove(run.reportPath)
@@ -371,7 +380,9 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
             segment.SetColor(*look.color)
         segmentation.GetDisplayNode().SetOpacity3D(look.opacity)
         labelMap.SetDisplayVisibility(False)
-        slicer.util.setSliceViewerLayers(background=inputVolume)
+        # label=None: the default keeps the current label layer, which may hold this label map (a
+        # run with a display update, or an older scene); the segmentation shows the lumen instead.
+        slicer.util.setSliceViewerLayers(background=inputVolume, label=None)
 
         for role in ("outputCenterlines", "outputStentModel", "outputSimulatedStentModel"):
             model = parameterNode.GetNodeReference(role)

@@ -24,36 +24,69 @@ import math
 
 REPORT_FORMAT = "StentGraftPlanner.report/1"
 
-ReturnValue = collections.namedtuple("ReturnValue", "name kind unit label")
+ReturnValue = collections.namedtuple("ReturnValue", "name kind unit label missing")
+ReturnValue.__doc__ = """One return parameter of the CLI that the panel reads.
 
-#: The CLI's return parameters this module reads, in display order.
+name: the XML <name>.
+kind: "float" or "str".
+unit: "mm", "deg", "%" or "" (a ratio), for display.
+label: the panel's text.
+missing: the text the CLI writes when it does not have the value, where that text cannot be a
+    real value (then it is read as None); None where it can, and is read as the value.
+"""
+
+#: The CLI writes every return value of the XML; one it does not have (not measured, a stage not
+#: run) as -1 for a number, "none" for a text (Logic/Pipeline/PlanValues.h).
+NOT_MEASURED = "-1"
+NO_VALUE = "none"
+
+
+def _number(name, unit, label, missing=NOT_MEASURED):
+    """A number that cannot be negative (diameter, length, angle, tortuosity, device size): its -1
+    is always "not measured". A signed one passes missing=None."""
+    return ReturnValue(name, "float", unit, label, missing)
+
+
+def _text(name, label, missing=NO_VALUE):
+    return ReturnValue(name, "str", "", label, missing)
+
+
+#: The CLI's return parameters this module reads, in display order. Which ones read -1 (or
+#: "none") as missing follows the XML's descriptions; check_cli_contract.py derives it from there.
 RETURN_VALUES = (
-    ReturnValue("proximalNeckDiameter", "float", "mm", "(a) proximal neck diameter"),
-    ReturnValue("neckDiameter15mm", "float", "mm", "(b) neck diameter 15 mm below"),
-    ReturnValue("maxAneurysmDiameter", "float", "mm", "(c) maximum aneurysm diameter"),
-    ReturnValue("distalNeckMinDiameter", "float", "mm", "(d) distal neck minimum diameter"),
-    ReturnValue("rightIliacDiameter", "float", "mm", "(e) right iliac diameter"),
-    ReturnValue("leftIliacDiameter", "float", "mm", "(f) left iliac diameter"),
-    ReturnValue("proximalNeckLength", "float", "mm", "proximal neck length"),
-    ReturnValue("proximalSiteToBifurcationLength", "float", "mm", "proximal site to bifurcation"),
-    ReturnValue("rightIliacLength", "float", "mm", "right iliac length"),
-    ReturnValue("leftIliacLength", "float", "mm", "left iliac length"),
-    ReturnValue("neckAngleBeta", "float", "deg", "infrarenal neck angle beta"),
-    ReturnValue("neckAngleAlpha", "float", "deg", "suprarenal neck angle alpha"),
-    ReturnValue("neckConicity", "float", "%", "neck conicity"),
-    ReturnValue("rightIliacTortuosity", "float", "", "right iliac tortuosity index"),
-    ReturnValue("leftIliacTortuosity", "float", "", "left iliac tortuosity index"),
-    ReturnValue("rightAccessMinDiameter", "float", "mm", "right access minimum diameter"),
-    ReturnValue("leftAccessMinDiameter", "float", "mm", "left access minimum diameter"),
-    ReturnValue("proximalSiteSource", "str", "", "proximal site taken from"),
-    ReturnValue("recommendedDevice", "str", "", "recommended device"),
-    ReturnValue("mainBodyDiameter", "float", "mm", "main body diameter"),
-    ReturnValue("rightLimbDiameter", "float", "mm", "right limb diameter"),
-    ReturnValue("leftLimbDiameter", "float", "mm", "left limb diameter"),
+    _number("proximalNeckDiameter", "mm", "(a) proximal neck diameter"),
+    _number("neckDiameter15mm", "mm", "(b) neck diameter 15 mm below"),
+    _number("maxAneurysmDiameter", "mm", "(c) maximum aneurysm diameter"),
+    _number("distalNeckMinDiameter", "mm", "(d) distal neck minimum diameter"),
+    _number("rightIliacDiameter", "mm", "(e) right iliac diameter"),
+    _number("leftIliacDiameter", "mm", "(f) left iliac diameter"),
+    _number("proximalNeckLength", "mm", "proximal neck length"),
+    _number("proximalSiteToBifurcationLength", "mm", "proximal site to bifurcation"),
+    _number("rightIliacLength", "mm", "right iliac length"),
+    _number("leftIliacLength", "mm", "left iliac length"),
+    _number("neckAngleBeta", "deg", "infrarenal neck angle beta"),
+    _number("neckAngleAlpha", "deg", "suprarenal neck angle alpha"),
+    # (b - a) / a in percent: -1 % is a neck narrowing slightly downward, so -1 is a value here.
+    _number("neckConicity", "%", "neck conicity", missing=None),
+    _number("rightIliacTortuosity", "", "right iliac tortuosity index"),
+    _number("leftIliacTortuosity", "", "left iliac tortuosity index"),
+    _number("rightAccessMinDiameter", "mm", "right access minimum diameter"),
+    _number("leftAccessMinDiameter", "mm", "left access minimum diameter"),
+    _text("proximalSiteSource", "proximal site taken from"),
+    # "none" is a result here: no family is within its instructions for use (NO_DEVICE).
+    _text("recommendedDevice", "recommended device", missing=None),
+    _number("mainBodyDiameter", "mm", "main body diameter"),
+    _number("rightLimbDiameter", "mm", "right limb diameter"),
+    _number("leftLimbDiameter", "mm", "left limb diameter"),
 )
 
-#: Return values for which the CLI writes -1 when it cannot measure them.
-NOT_MEASURABLE_IS_NEGATIVE = frozenset(("neckAngleAlpha",))
+#: Return values whose -1 (or "none") means "not measured" (derived from RETURN_VALUES).
+NOT_MEASURED_NAMES = frozenset(item.name for item in RETURN_VALUES if item.missing is not None)
+
+#: Signed values computed from others, in name -> operands: not measured when an operand is not
+#: (the CLI then writes -1, which the signed value itself cannot tell from a measurement).
+#: neckConicity is (b - a) / a of the XML, a = proximalNeckDiameter, b = neckDiameter15mm.
+COMPUTED_FROM = {"neckConicity": ("proximalNeckDiameter", "neckDiameter15mm")}
 
 #: The recommendedDevice value that means no family passed its IFU checks.
 NO_DEVICE = "none"
@@ -82,26 +115,30 @@ def readReturnValues(getParameterAsString):
     """The return values of a finished run.
 
     getParameterAsString: a function name -> str (``cliNode.GetParameterAsString`` in Slicer).
-    Returns name -> float, str or None; None where the text is empty or unreadable, and where the
-    CLI wrote a negative value for a quantity it could not measure (``neckAngleAlpha``).
+    Returns name -> float, str or None. None where the text is empty or unreadable, where the CLI
+    wrote its "not measured" text (-1, none) for a value that cannot take it (``ReturnValue.missing``),
+    and for a computed value one of whose operands is None (``COMPUTED_FROM``).
     """
     values = {}
     for item in RETURN_VALUES:
-        text = getParameterAsString(item.name)
+        text = (getParameterAsString(item.name) or "").strip()
         if item.kind == "str":
-            values[item.name] = (text or "").strip() or None
+            values[item.name] = None if not text or text == item.missing else text
             continue
         value = _toFloat(text)
-        if value is not None and item.name in NOT_MEASURABLE_IS_NEGATIVE and value < 0:
+        if value is not None and item.missing is not None and value == float(item.missing):
             value = None
         values[item.name] = value
+    for name, operands in COMPUTED_FROM.items():
+        if any(values[operand] is None for operand in operands):
+            values[name] = None
     return values
 
 
 def formatValue(value, unit):
-    """"23.4 mm", "12 deg", "1.05", or "not measurable" for None."""
+    """"23.4 mm", "12 deg", "1.05", or "not measured" for None."""
     if value is None:
-        return "not measurable"
+        return "not measured"
     if isinstance(value, str):
         return value
     text = "%.1f" % value

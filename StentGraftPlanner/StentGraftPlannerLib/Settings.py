@@ -243,8 +243,11 @@ def buildCliParameters(settings, nodes, pointCounts, reportPath):
     reportPath: where the CLI writes its JSON report (a temporary file).
 
     Raises ValueError when a required input is missing, a point list is empty, or a setting rule
-    is broken (``validateSettings``). Floats go as float, integers as int and the combined
-    arguments as pre-joined strings (slicer.cli turns a list into "a, b" with spaces).
+    is broken (``validateSettings``). Floats go as text formatted by ``formatNumber`` (slicer.cli
+    hands a Python float to ``SetParameterAsDouble``, which keeps six significant digits:
+    acmToleranceMm 0.00123456789 would reach the CLI as 0.00123457, 1234567.0 as 1.23457e+06),
+    integers as int and the combined arguments as pre-joined strings (slicer.cli turns a list into
+    "a, b" with spaces).
     """
     validateSettings(settings)
     if nodes.get("inputVolume") is None:
@@ -258,7 +261,7 @@ def buildCliParameters(settings, nodes, pointCounts, reportPath):
     for setting in SETTINGS:
         if setting.cli:
             value = settings[setting.name]
-            parameters[setting.name] = {"float": float, "int": int}.get(setting.kind, str)(value)
+            parameters[setting.name] = {"float": formatNumber, "int": int}.get(setting.kind, str)(value)
     parameters["device"] = deviceArgument(settings["deviceFamily"], settings["deviceDiameterMm"])
     parameters["proximalOversizingRange"] = "%s,%s" % (
         formatNumber(settings["oversizingMinPercent"]),

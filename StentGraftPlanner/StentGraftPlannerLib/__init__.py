@@ -7,6 +7,8 @@ that way in CTest (``Testing/Python``).
 
 - ``Settings``: the panel's settings, their defaults (equal to the CLI XML's), their storage as
   parameter-node strings, and the parameter dictionary handed to ``slicer.cli.run``.
+- ``CliRun``: the CLI looked up when a run starts, started without display update, and a run in
+  flight followed and, when the scene closes, cancelled.
 - ``Results``: reading what the CLI returns (return parameters, the diameter-profile table, the JSON
   report) and formatting the device recommendation.
 - ``Appearance``: colours and opacities of the outputs and of the plot series.

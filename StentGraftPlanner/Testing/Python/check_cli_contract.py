@@ -7,13 +7,22 @@ Usage: check_cli_contract.py MODULE_DIR StentGraftSimulation.xml SyntheticAortic
   carries what is sent (a node role's node class, a string, a comma list, a file path), and the
   points declare coordinateSystem="ras" (the markups' own coordinates);
 - every CLI setting's default equals the XML <default>, and an enumeration offers the same values;
-- every return value the module reads is an XML return parameter (channel output, no flag);
+- every float setting is sent as text, not as a Python float (slicer.cli would pass it through
+  SetParameterAsDouble, which keeps six significant digits);
+- every return value the module reads is an XML return parameter (channel output, no flag), and it
+  reads the CLI's "not measured" text (-1, none) as missing exactly where the XML's description
+  leaves no other reading: -1 where the description says "-1 when ..." or the quantity cannot be
+  negative (in mm, in degrees, a tortuosity ratio), not where it is signed (in percent, in HU);
+  "none" where the description does not offer none as a value; and its display unit is the XML's;
+- the module's dependencies name none of the extension's CLIs (Slicer's generic module tests run
+  with --disable-cli-modules, and a module whose dependency is not loaded is not loaded at all);
 - every parameter StentGraftPlannerTest passes to SyntheticAorticPhantom, and its seedRas return,
   is declared there.
 A planted defect (an undeclared name) must be rejected too. Exit code 0 when all pass.
 """
 import ast
 import os
+import re
 import sys
 import xml.etree.ElementTree as ET
 
@@ -40,6 +49,7 @@ def xmlParameters(path):
                 "channel": element.findtext("channel"),
                 "flagged": any(element.find(t) is not None for t in ("flag", "longflag", "index")),
                 "elements": [e.text for e in element.findall("element")],
+                "description": " ".join((element.findtext("description") or "").split()),
             }
     return parameters
 
@@ -81,6 +91,9 @@ def sentParameterProblems(Settings, declared):
         elif name == "device":
             if tag != "string":
                 problems.append("device is a <%s>, expected a <string> (\"auto\", \"Family\", \"Family:diameter\")" % tag)
+        if isinstance(value, float):
+            problems.append("%s is sent as a Python float: slicer.cli formats it with six significant digits; "
+                            "send Settings.formatNumber(value)" % name)
     return problems
 
 
@@ -102,9 +115,36 @@ def settingDefaultProblems(Settings, declared):
     return problems
 
 
-def returnValueProblems(Results, declared):
+#: Phrases of an XML return value's description that say -1 cannot be a value (the quantity cannot
+#: be negative), with the display unit they imply ("" for a ratio).
+NON_NEGATIVE_PHRASES = (("in mm", "mm"), ("in degrees", "deg"), ("in mL", "mL"), ("(1 = straight)", ""))
+#: Phrases that say the quantity is signed, so that -1 is a value unless the XML says otherwise.
+SIGNED_PHRASES = (("in percent", "%"), ("in HU", "HU"))
+
+
+def expectedMissing(parameter):
+    """(missing text, unit or None, problem or None) that the XML description implies for a return value."""
+    description = parameter["description"]
+    if parameter["tag"] == "string":
+        # "none" is a value where the description offers it ("... or none when ..."), else "not had".
+        return (None if re.search(r"\bnone\b", description) else "none"), None, None
+    unit = None
+    for phrase, phraseUnit in NON_NEGATIVE_PHRASES + SIGNED_PHRASES:
+        if phrase in description:
+            unit = phraseUnit if unit is None else unit
+    if re.search(r"(^|[\s;(])-1 when\b", description):
+        return "-1", unit, None
+    if any(phrase in description for phrase, _ in NON_NEGATIVE_PHRASES):
+        return "-1", unit, None
+    if any(phrase in description for phrase, _ in SIGNED_PHRASES):
+        return None, unit, None
+    return None, None, ("cannot tell from the XML description whether -1 can be a value: %r; say \"-1 when ...\" "
+                        "or give the unit, or extend NON_NEGATIVE_PHRASES/SIGNED_PHRASES" % description)
+
+
+def returnValueProblems(Results, declared, returnValues=None):
     problems = []
-    for item in Results.RETURN_VALUES:
+    for item in Results.RETURN_VALUES if returnValues is None else returnValues:
         parameter = declared.get(item.name)
         if parameter is None or parameter["channel"] != "output" or parameter["flagged"]:
             problems.append("the module reads the return parameter %s, which the XML does not declare as one "
@@ -113,7 +153,52 @@ def returnValueProblems(Results, declared):
         wanted = ("string",) if item.kind == "str" else ("float", "double")
         if parameter["tag"] not in wanted:
             problems.append("return parameter %s is a <%s>, expected %s" % (item.name, parameter["tag"], " or ".join(wanted)))
+            continue
+        missing, unit, problem = expectedMissing(parameter)
+        if problem:
+            problems.append("%s: %s" % (item.name, problem))
+        elif item.missing != missing:
+            problems.append("%s: the module reads %s as missing, the XML description implies %s (%r)"
+                            % (item.name, _missingText(item.missing), _missingText(missing), parameter["description"]))
+        if unit is not None and item.unit != unit:
+            problems.append("%s: the module shows it in %r, the XML gives %r" % (item.name, item.unit, unit))
     return problems
+
+
+def _missingText(missing):
+    return "no text" if missing is None else repr(missing)
+
+
+def computedValueProblems(Results):
+    """A computed value's operands are read values that can be missing themselves."""
+    names = {item.name: item for item in Results.RETURN_VALUES}
+    problems = []
+    for name, operands in Results.COMPUTED_FROM.items():
+        for operand in (name,) + tuple(operands):
+            if operand not in names:
+                problems.append("COMPUTED_FROM names %s, which the module does not read" % operand)
+        if name in names and names[name].missing is not None:
+            problems.append("%s reads -1 as missing already; COMPUTED_FROM is for signed values" % name)
+    return problems
+
+
+def moduleDependencies(moduleSource):
+    """The list assigned to self.parent.dependencies in StentGraftPlanner.py, or None if there is none."""
+    for node in ast.walk(ast.parse(moduleSource)):
+        if isinstance(node, ast.Assign):
+            for target in node.targets:
+                if isinstance(target, ast.Attribute) and target.attr == "dependencies":
+                    return ast.literal_eval(node.value)
+    return None
+
+
+def dependencyProblems(moduleSource, cliNames):
+    dependencies = moduleDependencies(moduleSource)
+    if dependencies is None:
+        return ["StentGraftPlanner.py assigns no self.parent.dependencies list any more; update this check"]
+    return ["the module depends on the CLI %s: Slicer's generic module tests run with --disable-cli-modules and "
+            "would not load the module; look the CLI up when a run starts instead" % name
+            for name in dependencies if name in cliNames]
 
 
 def phantomProblems(moduleSource, declared):
@@ -131,6 +216,8 @@ def phantomProblems(moduleSource, declared):
 
 
 def main(moduleDir, simulationXml, phantomXml):
+    # A CLI's module name is its XML file's (and executable's) base name.
+    cliNames = {os.path.splitext(os.path.basename(path))[0] for path in (simulationXml, phantomXml)}
     sys.path.insert(0, moduleDir)
     from StentGraftPlannerLib import Results, Settings
 
@@ -140,13 +227,37 @@ def main(moduleDir, simulationXml, phantomXml):
     checks = [
         ("parameters sent to StentGraftSimulation are declared with fitting types", sentParameterProblems(Settings, declared)),
         ("CLI setting defaults equal the XML defaults", settingDefaultProblems(Settings, declared)),
-        ("return values read are XML return parameters", returnValueProblems(Results, declared)),
+        ("return values read are XML return parameters, with 'not measured' read where the XML implies it",
+         returnValueProblems(Results, declared)),
+        ("computed values name read operands", computedValueProblems(Results)),
+        ("the module's dependencies name no CLI", dependencyProblems(moduleSource, cliNames)),
         ("the self-test's phantom parameters are declared", phantomProblems(moduleSource, xmlParameters(phantomXml))),
     ]
     planted = dict(declared)
     planted.pop("seed")
     checks.append(("planted defect, an undeclared seed, is rejected",
                    [] if sentParameterProblems(Settings, planted) else ["not rejected"]))
+    formatNumber = Settings.formatNumber
+    Settings.formatNumber = float  # the defect of issue 14 item 7: floats handed to slicer.cli as floats
+    try:
+        floatsSent = sentParameterProblems(Settings, declared)
+    finally:
+        Settings.formatNumber = formatNumber
+    checks.append(("planted defect, float settings sent as Python floats, is rejected",
+                   [] if floatsSent else ["not rejected"]))
+    byName = {item.name: item for item in Results.RETURN_VALUES}
+    plantedValues = {
+        "a signed conicity read -1 as missing": byName["neckConicity"]._replace(missing="-1"),
+        "a diameter read -1 as a value": byName["rightIliacDiameter"]._replace(missing=None),
+        "an angle documented '-1 when' read -1 as a value": byName["neckAngleAlpha"]._replace(missing=None),
+        "a device 'none' read as missing": byName["recommendedDevice"]._replace(missing="none"),
+    }
+    for what, item in plantedValues.items():
+        checks.append(("planted defect, %s, is rejected" % what,
+                       [] if returnValueProblems(Results, declared, [item]) else ["not rejected"]))
+    checks.append(("planted defect, the CLI in the dependencies, is rejected",
+                   [] if dependencyProblems(moduleSource.replace("dependencies = []", 'dependencies = ["StentGraftSimulation"]'),
+                                            cliNames) else ["not rejected"]))
     failed = 0
     for title, problems in checks:
         print("%s: %s" % ("FAIL" if problems else "PASS", title))

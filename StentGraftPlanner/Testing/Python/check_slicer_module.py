@@ -11,6 +11,13 @@
       are of a class that holds their kind (a QDoubleSpinBox for a float, ...), hold their default
       within range and at their precision, and a combo box offers exactly an enumeration's values;
       every MRML widget receives the scene from the root widget; the root is a qMRMLWidget.
+  check_slicer_module.py calls MODULE_DIR
+      StentGraftPlanner.py's Slicer calls outside its self-test (issue 14 items 2 to 4): every CLI
+      run starts through StentGraftPlannerLib.CliRun.startCli (no display update; the CLI looked up
+      by CliRun.cliModule, never as slicer.modules.stentgraftsimulation), every
+      setSliceViewerLayers clears the label layer (label=None), and the scene's StartCloseEvent
+      handler reaches PlanningRun.abandon (which test_cli_run.py shows cancels the CLI node and
+      removes its observers).
 
 Each check also runs on a planted defect and must reject it, so a check that cannot fail is caught.
 Exit code 0 when everything passes.
@@ -131,6 +138,89 @@ def uiProblems(source, uiText, settings):
     return problems
 
 
+def dottedName(node):
+    """'slicer.cli.run' for the expression slicer.cli.run, '' for anything but names and attributes."""
+    if isinstance(node, ast.Name):
+        return node.id
+    if isinstance(node, ast.Attribute):
+        inner = dottedName(node.value)
+        return inner + "." + node.attr if inner else ""
+    return ""
+
+
+def calledNames(function):
+    """Last parts of the names a function calls ('abandon' for run.abandon())."""
+    return {call.func.attr if isinstance(call.func, ast.Attribute) else dottedName(call.func)
+            for call in ast.walk(function) if isinstance(call, ast.Call)}
+
+
+def slicerCallProblems(source):
+    tree = ast.parse(source)
+    classes = [node for node in tree.body if isinstance(node, ast.ClassDef)]
+    # The self-test runs other CLIs (the phantom) its own way; the panel's code is everything else.
+    code = [node for node in tree.body if not (isinstance(node, ast.ClassDef) and node.name.endswith("Test"))]
+    methods = {}
+    for cls in classes:
+        if not cls.name.endswith("Test"):
+            for item in cls.body:
+                if isinstance(item, ast.FunctionDef):
+                    methods.setdefault(item.name, []).append(item)
+    problems = []
+    handlers = []
+    for node in (inner for top in code for inner in ast.walk(top)):
+        name = dottedName(node.func) if isinstance(node, ast.Call) else ""
+        if name in ("slicer.cli.run", "slicer.cli.runSync", "slicer.cli.runAsync"):
+            problems.append("line %d calls %s: start the CLI through CliRun.startCli (update_display=False, "
+                            "the CLI looked up when the run starts)" % (node.lineno, name))
+        elif name.endswith("setSliceViewerLayers"):
+            label = [k.value for k in node.keywords if k.arg == "label"]
+            if not (label and isinstance(label[0], ast.Constant) and label[0].value is None):
+                problems.append("line %d: setSliceViewerLayers without label=None keeps the lumen label map on "
+                                "every slice view's label layer" % node.lineno)
+        elif name.endswith("addObserver") and any(dottedName(a).endswith("StartCloseEvent") for a in node.args):
+            handlers += [dottedName(a).split(".")[-1] for a in node.args[2:3]]
+        if isinstance(node, ast.Attribute) and dottedName(node) == "slicer.modules.stentgraftsimulation":
+            problems.append("line %d names slicer.modules.stentgraftsimulation: look it up with CliRun.cliModule, "
+                            "which says what to do when the CLI is not loaded" % node.lineno)
+    if not handlers:
+        problems.append("no StartCloseEvent observer of the scene: a run in flight outlives the scene")
+    for handler in handlers:
+        reached, pending = set(), [handler]
+        while pending:  # the names the handler calls, through the module's own methods
+            name = pending.pop()
+            for function in methods.get(name, []):
+                for called in calledNames(function) - reached:
+                    reached.add(called)
+                    pending.append(called)
+        if handler not in methods:
+            problems.append("the StartCloseEvent handler %s is not a method of the module" % handler)
+        elif "abandon" not in reached:
+            problems.append("the StartCloseEvent handler %s never reaches PlanningRun.abandon: the CLI keeps running "
+                            "and writes into the closed scene's nodes" % handler)
+    return problems
+
+
+def runCalls(moduleDir):
+    with open(os.path.join(moduleDir, MODULE + ".py")) as f:
+        source = f.read()
+    ok = report("CLI runs go through CliRun.startCli, the label layer is cleared, scene close abandons the run",
+                slicerCallProblems(source))
+    planted = {
+        "a direct slicer.cli.run": ("CliRun.startCli(slicer.cli, slicer.modules, parameters, waitForCompletion=False)",
+                                    "slicer.cli.run(slicer.modules.stentgraftsimulation, None, parameters)"),
+        "setSliceViewerLayers keeping the label layer": ("background=inputVolume, label=None)", "background=inputVolume)"),
+        "a scene close that leaves the run going": ("self._abandonRun(\"The planning run was cancelled: the scene was closed.\")",
+                                                   "pass"),
+    }
+    for what, (old, new) in planted.items():
+        if source.count(old) != 1:
+            ok &= report("planted defect, %s, can be planted" % what, ["%r is not in %s.py once; update this check" % (old, MODULE)])
+            continue
+        problems = slicerCallProblems(source.replace(old, new))
+        ok &= report("planted defect, %s, is rejected" % what, [] if problems else ["not rejected"])
+    return ok
+
+
 def report(title, problems):
     print("%s: %s" % ("PASS" if not problems else "FAIL", title))
     for problem in problems:
@@ -189,7 +279,8 @@ def runUi(moduleDir):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3 or sys.argv[1] not in ("compile", "ui"):
+    modes = {"compile": runCompile, "ui": runUi, "calls": runCalls}
+    if len(sys.argv) != 3 or sys.argv[1] not in modes:
         sys.exit(__doc__)
-    passed = (runCompile if sys.argv[1] == "compile" else runUi)(os.path.abspath(sys.argv[2]))
+    passed = modes[sys.argv[1]](os.path.abspath(sys.argv[2]))
     sys.exit(0 if passed else 1)

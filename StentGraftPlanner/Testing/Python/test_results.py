@@ -26,20 +26,50 @@ class ReturnValuesTest(unittest.TestCase):
                  "neckConicity": "inf"}
         values = Results.readReturnValues(lambda name: given.get(name, ""))
         self.assertEqual(values["proximalNeckDiameter"], 22.25)
-        self.assertIsNone(values["neckAngleAlpha"])  # -1: not measurable
+        self.assertIsNone(values["neckAngleAlpha"])  # -1: not measured
         self.assertEqual(values["neckAngleBeta"], 35.0)
         self.assertEqual(values["recommendedDevice"], "Endurant II:25")
         for name in ("rightIliacDiameter", "leftIliacDiameter", "neckConicity", "maxAneurysmDiameter"):
             self.assertIsNone(values[name], name)
         self.assertEqual(set(values), {item.name for item in Results.RETURN_VALUES})
 
+    def test_EverythingNotMeasured_IsNoneExceptTheDeviceVerdict(self):
+        # Issue 14 item 6: what the CLI writes when a run measures nothing (PlanValues.h).
+        given = {item.name: ("-1" if item.kind == "float" else "none") for item in Results.RETURN_VALUES}
+        values = Results.readReturnValues(given.get)
+        self.assertEqual(values["recommendedDevice"], Results.NO_DEVICE)  # "none" is a verdict here
+        for item in Results.RETURN_VALUES:
+            if item.name != "recommendedDevice":
+                self.assertIsNone(values[item.name], item.name)
+        lines = Results.measurementSummaryLines(values)
+        self.assertIn("(e) right iliac diameter: not measured", lines)
+        self.assertFalse([line for line in lines if "-1" in line], lines)
+
+    def test_NotMeasured_CoversEveryNonNegativeQuantity(self):
+        for item in Results.RETURN_VALUES:
+            if item.kind == "float" and item.unit in ("mm", "deg", ""):  # diameters, lengths, angles, ratios
+                self.assertIn(item.name, Results.NOT_MEASURED_NAMES, item.name)
+        self.assertNotIn("neckConicity", Results.NOT_MEASURED_NAMES)
+
+    def test_MinusOnePercentConicity_IsAValueWhenBothDiametersAreMeasured(self):
+        given = {"proximalNeckDiameter": "25", "neckDiameter15mm": "24.75", "neckConicity": "-1"}
+        values = Results.readReturnValues(lambda name: given.get(name, ""))
+        self.assertEqual(values["neckConicity"], -1.0)  # the neck narrows 1 % downward
+
+    def test_Conicity_IsNotMeasuredWithoutEitherDiameter(self):
+        for missing in ("proximalNeckDiameter", "neckDiameter15mm"):
+            given = {"proximalNeckDiameter": "25", "neckDiameter15mm": "24.75", "neckConicity": "-1", missing: "-1"}
+            values = Results.readReturnValues(lambda name: given.get(name, ""))
+            self.assertIsNone(values["neckConicity"], missing)
+
     def test_NegativeValueOfAMeasurableQuantity_IsKept(self):
         values = Results.readReturnValues(lambda name: "-2.5")
         self.assertEqual(values["neckConicity"], -2.5)  # a neck narrowing downward
+        self.assertEqual(values["rightIliacDiameter"], -2.5)  # not the CLI's -1: shown, not hidden
 
     def test_FormatValue(self):
         self.assertEqual(Results.formatValue(22.25, "mm"), "22.2 mm")
-        self.assertEqual(Results.formatValue(None, "mm"), "not measurable")
+        self.assertEqual(Results.formatValue(None, "mm"), "not measured")
         self.assertEqual(Results.formatValue(1.234, ""), "1.23")
         lines = Results.measurementSummaryLines({"proximalNeckDiameter": 22.0})
         self.assertEqual(lines[0], "(a) proximal neck diameter: 22.0 mm")

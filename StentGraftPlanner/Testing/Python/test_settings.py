@@ -132,15 +132,30 @@ class BuildCliParametersTest(unittest.TestCase):
     def test_Defaults_GiveEveryCliSettingWithItsType(self):
         parameters = self.build()
         for s in Settings.SETTINGS:
-            if s.cli:
+            if not s.cli:
+                self.assertNotIn(s.name, parameters)
+            elif s.kind == "float":  # as text: slicer.cli would format a float with six digits
+                self.assertEqual(parameters[s.name], Settings.formatNumber(s.default), s.name)
+                self.assertIs(type(parameters[s.name]), str, s.name)
+            else:
                 self.assertEqual(parameters[s.name], s.default, s.name)
                 self.assertIs(type(parameters[s.name]), type(s.default), s.name)
-            else:
-                self.assertNotIn(s.name, parameters)
         self.assertEqual(parameters["device"], "auto")
         self.assertEqual(parameters["proximalOversizingRange"], "10,20")  # pre-joined: no ", " from slicer.cli
         self.assertEqual(parameters["outputReport"], "/tmp/report.json")
         self.assertNotIn("deviceCatalog", parameters)  # the CLI's default: the bundled catalogue
+
+    def test_FloatSettings_KeepMoreThanSixSignificantDigits(self):
+        # Issue 14 item 7: SetParameterAsDouble would send 0.00123457 and 1.23457e+06.
+        settings = dict(Settings.defaultSettings(), acmToleranceMm=0.00123456789, maximumLumenVolumeMl=1234567.0,
+                        lowerHu=-123.456789)
+        parameters = self.build(settings)
+        self.assertEqual(parameters["acmToleranceMm"], "0.00123456789")
+        self.assertEqual(parameters["maximumLumenVolumeMl"], "1234567")
+        self.assertEqual(parameters["lowerHu"], "-123.456789")
+        for s in Settings.SETTINGS:
+            if s.cli and s.kind == "float":
+                self.assertEqual(float(parameters[s.name]), settings[s.name], s.name)  # exact round trip
 
     def test_Nodes_ArePassedThroughUnderTheirRoles(self):
         nodes = allNodes()
