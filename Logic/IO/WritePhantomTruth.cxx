@@ -58,7 +58,17 @@ void WritePhantomTruth(const AorticPhantom& phantom, const std::string& path)
        << ", \"proximalSiteToBifurcationLength\": " << Number(s.proximalSiteToBifurcationLength)
        << ", \"rightIliacLength\": " << Number(s.rightIliacLength)
        << ", \"leftIliacLength\": " << Number(s.leftIliacLength)
-       << ", \"neckAngleBetaDeg\": " << Number(s.neckAngleBetaDeg) << "},\n";
+       << ", \"neckAngleBetaDeg\": " << Number(s.neckAngleBetaDeg)
+       << ", \"outerProximalNeckDiameter\": " << Number(s.outerProximalNeckDiameter)
+       << ", \"outerNeckDiameter15mm\": " << Number(s.outerNeckDiameter15mm)
+       << ", \"outerMaxAneurysmDiameter\": " << Number(s.outerMaxAneurysmDiameter)
+       << ", \"outerDistalNeckMinDiameter\": " << Number(s.outerDistalNeckMinDiameter)
+       << ", \"outerRightIliacDiameter\": " << Number(s.outerRightIliacDiameter)
+       << ", \"outerLeftIliacDiameter\": " << Number(s.outerLeftIliacDiameter)
+       << ", \"thrombusVolumeMl\": " << Number(s.thrombusVolumeMl)
+       << ", \"maxThrombusThicknessMm\": " << Number(s.maxThrombusThicknessMm)
+       << ", \"neckThrombusArcPercent\": " << Number(s.neckThrombusArcPercent)
+       << ", \"neckCalcificationArcPercent\": " << Number(s.neckCalcificationArcPercent) << "},\n";
   json << "  \"landmarks\": {";
   for (std::size_t i = 0; i < truth.landmarks.size(); ++i)
   {
@@ -80,7 +90,9 @@ void WritePhantomTruth(const AorticPhantom& phantom, const std::string& path)
     }
     json << "]}" << (v + 1 < truth.vessels.size() ? "," : "") << "\n";
   }
-  json << "  ],\n  \"labels\": {\"0\": \"tissue\", \"1\": \"lumen\", \"2\": \"bone\", \"3\": \"kidney\"}\n}\n";
+  json << "  ],\n  \"labels\": {\"0\": \"tissue\", \"1\": \"lumen\", \"2\": \"bone\", \"3\": \"kidney\", \"4\": "
+          "\"wall\", \"5\": \"thrombus\", \"6\": \"calcium\", \"7\": \"psoas\", \"8\": \"ivc\", \"9\": \"duodenum\", "
+          "\"10\": \"leftRenalVein\"}\n}\n";
   WriteTextFile(json.str(), path, "the ground truth");
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <random>
 
 #include <Eigen/Dense>
@@ -10,6 +11,7 @@
 #include "Common/CheckRange.h"
 #include "Common/Errors.h"
 #include "Common/Format.h"
+#include "Phantom/AorticWall.h"
 
 namespace sgp
 {
@@ -47,7 +49,10 @@ struct Ellipsoid
 
 struct Anatomy
 {
-  std::vector<Tube> tubes;
+  std::vector<Tube> tubes;          ///< lumens
+  std::vector<Tube> wallTubes;      ///< the iliacs' outer walls (drawn at wallHu; their lumens override)
+  std::unique_ptr<AorticWall> wall; ///< the aorta's wall, thrombus, calcium and neighbours, if any
+  double siteZ = 0.0;               ///< the proximal implantation site's height (bolus gradient reference)
   std::vector<Ellipsoid> kidneys;
   bool column = false;
   double columnY = 0.0; ///< centre of the vertebral column (x = 0), LPS mm
@@ -72,6 +77,28 @@ Point3 Unit(double x, double y, double z)
 Tube StraightTube(const std::string& name, const std::vector<Point3>& axis, double radius)
 {
   return { name, axis, [radius](double) { return radius; }, radius };
+}
+
+/// A tube along a sampled curve whose radius is given at each vertex (linear in arc length between).
+Tube SampledTube(const std::string& name, const std::vector<Point3>& axis, const std::vector<double>& radii)
+{
+  std::vector<double> s(axis.size(), 0.0);
+  for (std::size_t k = 1; k < axis.size(); ++k)
+    s[k] = s[k - 1] + (axis[k] - axis[k - 1]).norm();
+  const double largest = *std::max_element(radii.begin(), radii.end());
+  return { name, axis,
+           [s, radii](double at)
+           {
+             const auto upper = std::upper_bound(s.begin(), s.end(), at);
+             if (upper == s.begin())
+               return radii.front();
+             if (upper == s.end())
+               return radii.back();
+             const std::size_t k = static_cast<std::size_t>(upper - s.begin());
+             const double t = (at - s[k - 1]) / (s[k] - s[k - 1]);
+             return (1 - t) * radii[k - 1] + t * radii[k];
+           },
+           largest };
 }
 
 Anatomy BuildAnatomy(const PhantomParams& p)
@@ -110,10 +137,27 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   const Eigen::Vector3d neckDirection(0.0, -std::sin(beta), std::cos(beta));
   const auto onAxis = [=](double h)
   { return h <= sacTop ? Point3(0, 0, h) : Point3(Point3(0, 0, sacTop) + (h - sacTop) * neckDirection); };
-  anatomy.tubes.push_back({ "aorta",
-                            { onAxis(topZ), onAxis(sacTop), Point3(0, 0, 0) },
-                            [=](double s) { return radiusAtZ(topZ - s); },
-                            std::max({ rNeck, rDistal, rMax }) });
+  anatomy.siteZ = siteZ;
+  const double wallMm = p.wallThicknessMm;
+  if (wallMm > 0.0)
+    anatomy.wall = std::make_unique<AorticWall>(p, radiusAtZ, sacBottom, sacTop, siteZ, topZ, beta);
+  const AorticWall* wall = anatomy.wall.get();
+  if (wall && wall->HasThrombus())
+  {
+    // The lumen off-centre in the thrombus: a tube along its own centerline (2 mm samples; the
+    // offset is a half-sine, so the chords stay within 0.01 mm of the curve).
+    std::vector<Point3> lumenAxis;
+    std::vector<double> lumenRadii;
+    wall->SampleLumen(2.0, lumenAxis, lumenRadii);
+    anatomy.tubes.push_back(SampledTube("aorta", lumenAxis, lumenRadii));
+  }
+  else
+  {
+    anatomy.tubes.push_back({ "aorta",
+                              { onAxis(topZ), onAxis(sacTop), Point3(0, 0, 0) },
+                              [=](double s) { return radiusAtZ(topZ - s) - wallMm; },
+                              std::max({ rNeck, rDistal, rMax }) - wallMm });
+  }
 
   const double angle = commonIliacAngleDeg * pi / 180.0;
   Point3 iliacEnd[2];
@@ -123,15 +167,23 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   {
     const double lateral = side == 0 ? -1.0 : 1.0; // patient right is -x in LPS
     const std::string prefix = sideName[side];
-    const double r = iliacRadius[side];
+    const double r = iliacRadius[side]; // outer; the lumen lies the wall's thickness inside
     iliacEnd[side] = commonIliacLengthMm * Point3(lateral * std::sin(angle), 0, -std::cos(angle));
-    anatomy.tubes.push_back(StraightTube(prefix + "Iliac", { Point3::Zero(), iliacEnd[side] }, r));
-    anatomy.tubes.push_back(StraightTube(prefix + "ExternalIliac",
-                                         { iliacEnd[side], iliacEnd[side] + 70.0 * Unit(lateral * 0.17, -0.15, -0.97) },
-                                         0.75 * r));
-    anatomy.tubes.push_back(StraightTube(prefix + "InternalIliac",
-                                         { iliacEnd[side], iliacEnd[side] + 40.0 * Unit(lateral * 0.45, 0.55, -0.7) },
-                                         0.55 * r));
+    const std::vector<Point3> common{ Point3::Zero(), iliacEnd[side] };
+    const std::vector<Point3> external{ iliacEnd[side], iliacEnd[side] + 70.0 * Unit(lateral * 0.17, -0.15, -0.97) };
+    const std::vector<Point3> internal{ iliacEnd[side], iliacEnd[side] + 40.0 * Unit(lateral * 0.45, 0.55, -0.7) };
+    // The smaller branches' walls at most a third of their radius (a 2 mm wall would close a
+    // 3 mm internal iliac).
+    const auto lumenOf = [wallMm](double outer) { return outer - std::min(wallMm, outer / 3.0); };
+    anatomy.tubes.push_back(StraightTube(prefix + "Iliac", common, r - wallMm));
+    anatomy.tubes.push_back(StraightTube(prefix + "ExternalIliac", external, lumenOf(0.75 * r)));
+    anatomy.tubes.push_back(StraightTube(prefix + "InternalIliac", internal, lumenOf(0.55 * r)));
+    if (wallMm > 0.0)
+    {
+      anatomy.wallTubes.push_back(StraightTube(prefix + "IliacWall", common, r));
+      anatomy.wallTubes.push_back(StraightTube(prefix + "ExternalIliacWall", external, 0.75 * r));
+      anatomy.wallTubes.push_back(StraightTube(prefix + "InternalIliacWall", internal, 0.55 * r));
+    }
     const double renalZ = side == 0 ? rightRenalZ : leftRenalZ;
     const Point3 hilum = onAxis(renalZ) + Point3(lateral * 64.0, 10.0, 0.0);
     anatomy.tubes.push_back(StraightTube(prefix + "Renal", { onAxis(renalZ), hilum }, renalRadiusMm));
@@ -159,12 +211,37 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   truth.landmarks.push_back({ "coeliacOstium", onAxis(coeliacZ) + Point3(0, -rNeck, 0) });
   truth.landmarks.push_back({ "maxAneurysmDiameterLevel", Point3(0, 0, zMax) });
   PhantomSizing& sizing = truth.sizing;
-  sizing.proximalNeckDiameter = 2 * radiusAtZ(siteZ);
-  sizing.neckDiameter15mm = 2 * radiusAtZ(siteZ - 15.0);
-  sizing.maxAneurysmDiameter = 2 * rMax;
-  sizing.distalNeckMinDiameter = 2 * rDistal;
-  sizing.rightIliacDiameter = p.rightIliacDiameterMm;
-  sizing.leftIliacDiameter = p.leftIliacDiameterMm;
+  sizing.outerProximalNeckDiameter = 2 * radiusAtZ(siteZ);
+  sizing.outerNeckDiameter15mm = 2 * radiusAtZ(siteZ - 15.0);
+  sizing.outerMaxAneurysmDiameter = 2 * rMax;
+  sizing.outerDistalNeckMinDiameter = 2 * rDistal;
+  sizing.outerRightIliacDiameter = p.rightIliacDiameterMm;
+  sizing.outerLeftIliacDiameter = p.leftIliacDiameterMm;
+  // The lumen: the outer wall less the wall, less the thrombus where there is one.
+  const auto lumenRadius = [&](double h) { return wall ? wall->LumenRadius(h) : radiusAtZ(h); };
+  sizing.proximalNeckDiameter = 2 * lumenRadius(siteZ);
+  sizing.neckDiameter15mm = 2 * lumenRadius(siteZ - 15.0);
+  double widestLumen = 0.0, widestH = siteZ;
+  for (double h = 0.0; h <= siteZ; h += 0.01)
+    if (lumenRadius(h) > widestLumen)
+    {
+      widestLumen = lumenRadius(h);
+      widestH = h;
+    }
+  sizing.maxAneurysmDiameter = 2 * widestLumen;
+  double narrowestLumen = widestLumen;
+  for (double h = 0.0; h <= widestH; h += 0.01)
+    narrowestLumen = std::min(narrowestLumen, lumenRadius(h));
+  sizing.distalNeckMinDiameter = 2 * narrowestLumen;
+  sizing.rightIliacDiameter = p.rightIliacDiameterMm - 2 * wallMm;
+  sizing.leftIliacDiameter = p.leftIliacDiameterMm - 2 * wallMm;
+  if (wall)
+  {
+    sizing.thrombusVolumeMl = wall->ThrombusVolumeMl();
+    sizing.maxThrombusThicknessMm = wall->MaxThrombusThicknessMm();
+    sizing.neckThrombusArcPercent = wall->NeckThrombusArcPercent();
+    sizing.neckCalcificationArcPercent = wall->NeckCalcificationArcPercent();
+  }
   // The clinical neck length (vessel-wall.md, the rule-engine convention): from the site to the
   // first level where the diameter exceeds (a) by 10 %; past the sac's top by the shoulder's
   // rise (about 1.6 mm on the default sac), found on the exact radius profile to 1 µm.
@@ -176,7 +253,15 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   sizing.rightIliacLength = commonIliacLengthMm;
   sizing.leftIliacLength = commonIliacLengthMm;
   sizing.neckAngleBetaDeg = p.neckAngleDeg;
-  truth.seedLps = Point3(0, 0, 0.5 * (sacTop + sacBottom));
+  // On the aneurysm lumen's axis at mid-sac (off the vessel's axis where there is a thrombus).
+  const double seedH = 0.5 * (sacTop + sacBottom);
+  truth.seedLps = Point3(0, 0, seedH);
+  if (wall)
+  {
+    const auto frame = wall->Frame(seedH);
+    const Eigen::Vector2d c = wall->LumenCentre(seedH);
+    truth.seedLps += c.x() * frame[0] + c.y() * frame[1];
+  }
   return anatomy;
 }
 
@@ -240,6 +325,17 @@ std::array<Point3, 2> AnatomyBounds(const Anatomy& anatomy)
   {
     lo = lo.cwiseMin(e.centre - e.semiAxes);
     hi = hi.cwiseMax(e.centre + e.semiAxes);
+  }
+  if (anatomy.wall)
+  {
+    double reach = anatomy.wall->MaxOuterRadius();
+    for (const WallNeighbour& n : anatomy.wall->Neighbours())
+      reach = std::max(reach, anatomy.wall->MaxOuterRadius() + n.thicknessMm);
+    for (const double h : { 0.0, anatomy.wall->TopH() })
+    {
+      lo = lo.cwiseMin(anatomy.wall->AxisPoint(h) - Point3::Constant(reach));
+      hi = hi.cwiseMax(anatomy.wall->AxisPoint(h) + Point3::Constant(reach));
+    }
   }
   if (anatomy.column)
   {
@@ -355,6 +451,58 @@ double EllipsoidSignedDistance(const Ellipsoid& e, const Point3& x)
   return (f - 1.0) / gradient;
 }
 
+/// The aorta's outer body (thrombus HU), wall, calcification and neighbour pads (AorticWall.h),
+/// each blurred like every other edge and the brightest taken where they meet. Labels by
+/// priority: calcium, wall, thrombus, neighbours (the lumens, drawn after, override them all).
+void DrawAorticWall(const AorticWall& wall,
+                    const PhantomParams& p,
+                    const Grid& grid,
+                    double reach,
+                    std::vector<float>& contrast,
+                    std::vector<unsigned char>& labels)
+{
+  double outward = wall.MaxOuterRadius();
+  for (const WallNeighbour& n : wall.Neighbours())
+    outward = std::max(outward, wall.MaxOuterRadius() + n.thicknessMm);
+  outward += reach;
+  Point3 lo = Point3::Constant(1e9), hi = Point3::Constant(-1e9);
+  for (const double h : { 0.0, wall.TopH(), std::min(wall.TopH(), 1e9) })
+  {
+    lo = lo.cwiseMin(wall.AxisPoint(h) - Point3::Constant(outward));
+    hi = hi.cwiseMax(wall.AxisPoint(h) + Point3::Constant(outward));
+  }
+  const double sigma = p.blurSigmaMm;
+  ForEachVoxelNear(grid, lo, hi,
+                   [&](long flat, const Point3& x)
+                   {
+                     const AorticWall::Coordinates c = wall.At(x);
+                     if (c.rho > outward || c.beyondMm > reach)
+                       return;
+                     const double ends = c.beyondMm; // past the aorta's top or below the bifurcation
+                     const double outer = std::max(wall.OuterSignedDistance(c), ends);
+                     const double shell = std::max(wall.WallSignedDistance(c), ends);
+                     float value = contrast[flat];
+                     unsigned char label = labels[flat];
+                     const auto take = [&](double hu, double sd, unsigned char l, bool inside)
+                     {
+                       value = std::max(value, float((hu - p.tissueHu) * EdgeProfile(sd, sigma)));
+                       if (inside && sd < 0.0)
+                         label = l;
+                     };
+                     // Lowest priority first: each later label overwrites.
+                     for (const WallNeighbour& n : wall.Neighbours())
+                       take(n.hu, std::max(wall.NeighbourSignedDistance(c, n), ends), n.label, true);
+                     if (wall.HasThrombus())
+                       take(p.thrombusHu, outer, ThrombusLabel, true);
+                     take(p.wallHu, shell, WallLabel, true);
+                     for (const WallCalcification& w : wall.Calcifications())
+                       take(p.calcificationHu, std::max(wall.CalcificationSignedDistance(c, w), ends), CalciumLabel,
+                            true);
+                     contrast[flat] = value;
+                     labels[flat] = label;
+                   });
+}
+
 } // namespace
 
 void ValidatePhantomParams(const PhantomParams& p)
@@ -399,6 +547,68 @@ void ValidatePhantomParams(const PhantomParams& p)
   check("boneGapMm", p.boneGapMm, 0.5, 50, "mm");
   check("kidneyHu", p.kidneyHu, 50, 400, "HU");
   check("neckAngleDeg", p.neckAngleDeg, 0, 75, "degrees");
+  check("wallThicknessMm", p.wallThicknessMm, 0, 4, "mm");
+  check("wallHu", p.wallHu, -200, 400, "HU");
+  check("thrombusMaxThicknessMm", p.thrombusMaxThicknessMm, 0, 40, "mm");
+  check("thrombusHu", p.thrombusHu, -200, 400, "HU");
+  check("neckThrombusThicknessMm", p.neckThrombusThicknessMm, 0, 15, "mm");
+  check("neckThrombusLengthMm", p.neckThrombusLengthMm, 3, 60, "mm");
+  check("calcificationHu", p.calcificationHu, 200, 3000, "HU");
+  check("sacCalcificationArcDeg", p.sacCalcificationArcDeg, 0, 360, "degrees");
+  check("neckCalcificationArcDeg", p.neckCalcificationArcDeg, 0, 360, "degrees");
+  check("psoasHu", p.psoasHu, -200, 400, "HU");
+  check("ivcHu", p.ivcHu, -200, 400, "HU");
+  check("duodenumHu", p.duodenumHu, -200, 400, "HU");
+  check("leftRenalVeinHu", p.leftRenalVeinHu, -200, 400, "HU");
+  check("bolusGradientHuPerCm", p.bolusGradientHuPerCm, -10, 10, "HU/cm");
+  const bool needsWall = p.thrombusMaxThicknessMm > 0 || p.neckThrombusThicknessMm > 0 ||
+                         p.sacCalcificationArcDeg > 0 || p.neckCalcificationArcDeg > 0 || p.includePsoas ||
+                         p.includeIvc || p.includeDuodenum || p.includeLeftRenalVein;
+  if (needsWall && !(p.wallThicknessMm > 0))
+    throw InputError("Thrombus, calcification and the neighbours lie in or against the vessel wall; wallThicknessMm is "
+                     "0 — give a wall (e.g. 1.5 mm).");
+  // The lumen must keep at least a quarter of the inner wall's radius where the thrombus is thickest.
+  const double innerSac = p.maxAneurysmDiameterMm / 2 - p.wallThicknessMm;
+  const double sacThrombus = (p.thrombusConcentric ? 1.0 : 0.5) * p.thrombusMaxThicknessMm;
+  if (p.thrombusMaxThicknessMm > 0 && innerSac - sacThrombus < 0.25 * innerSac)
+    throw InputError("thrombusMaxThicknessMm (" + FormatNumber(p.thrombusMaxThicknessMm) +
+                     " mm) leaves less than a quarter of the sac's inner radius (" + FormatNumber(innerSac) +
+                     " mm) as lumen; give a thinner thrombus or a wider sac.");
+  const double innerNeck = p.neckDiameterMm / 2 - p.wallThicknessMm;
+  if (p.neckThrombusThicknessMm > 0.75 * innerNeck ||
+      p.wallThicknessMm > 0.25 * std::min(p.rightIliacDiameterMm, p.leftIliacDiameterMm))
+    throw InputError("The wall and neck thrombus leave too little lumen (neck inner radius " + FormatNumber(innerNeck) +
+                     " mm, neckThrombusThicknessMm " + FormatNumber(p.neckThrombusThicknessMm) +
+                     " mm, wallThicknessMm " + FormatNumber(p.wallThicknessMm) + " mm); make them thinner.");
+}
+
+double SideDegrees(PhantomSide side)
+{
+  switch (side)
+  {
+    case PhantomSide::Anterior:
+      return 0.0;
+    case PhantomSide::Left:
+      return 90.0;
+    case PhantomSide::Posterior:
+      return 180.0;
+    case PhantomSide::Right:
+      return 270.0;
+  }
+  return 0.0;
+}
+
+PhantomSide ParsePhantomSide(const std::string& text, const std::string& parameter)
+{
+  if (text == "anterior")
+    return PhantomSide::Anterior;
+  if (text == "left")
+    return PhantomSide::Left;
+  if (text == "posterior")
+    return PhantomSide::Posterior;
+  if (text == "right")
+    return PhantomSide::Right;
+  throw InputError(parameter + " is '" + text + "'; expected anterior, left, posterior or right.");
 }
 
 AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallback& progress)
@@ -412,6 +622,30 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
   std::vector<unsigned char> labels(static_cast<std::size_t>(count), TissueLabel);
   const double reach = 4.0 * p.blurSigmaMm + grid.spacing.norm();
 
+  if (anatomy.wall)
+  {
+    ReportProgress(progress, 0.0, "Vessel wall");
+    DrawAorticWall(*anatomy.wall, p, grid, reach, contrast, labels);
+    for (const Tube& tube : anatomy.wallTubes)
+    {
+      Point3 lo = Point3::Constant(1e9), hi = Point3::Constant(-1e9);
+      for (const Point3& v : tube.axis)
+      {
+        lo = lo.cwiseMin(v - Point3::Constant(tube.maxRadius + reach));
+        hi = hi.cwiseMax(v + Point3::Constant(tube.maxRadius + reach));
+      }
+      ForEachVoxelNear(grid, lo, hi,
+                       [&](long flat, const Point3& x)
+                       {
+                         const double sd = TubeSignedDistance(tube, x);
+                         contrast[flat] =
+                           std::max(contrast[flat], float((p.wallHu - p.tissueHu) * EdgeProfile(sd, p.blurSigmaMm)));
+                         if (sd < 0.0 && labels[flat] == TissueLabel)
+                           labels[flat] = WallLabel;
+                       });
+    }
+  }
+
   for (std::size_t t = 0; t < anatomy.tubes.size(); ++t)
   {
     ReportProgress(progress, 0.7 * double(t) / anatomy.tubes.size(), "Vessels");
@@ -422,11 +656,13 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
       lo = lo.cwiseMin(v - Point3::Constant(tube.maxRadius + reach));
       hi = hi.cwiseMax(v + Point3::Constant(tube.maxRadius + reach));
     }
-    const double lumenContrast = p.lumenHu - p.tissueHu;
     ForEachVoxelNear(grid, lo, hi,
                      [&](long flat, const Point3& x)
                      {
                        const double sd = TubeSignedDistance(tube, x);
+                       // The bolus's cranio-caudal gradient, from the site's level (0 by default).
+                       const double lumenContrast =
+                         p.lumenHu + p.bolusGradientHuPerCm * (x.z() - anatomy.siteZ) / 10.0 - p.tissueHu;
                        contrast[flat] = std::max(contrast[flat], float(lumenContrast * EdgeProfile(sd, p.blurSigmaMm)));
                        if (sd < 0.0)
                        {

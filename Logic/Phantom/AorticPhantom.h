@@ -47,6 +47,19 @@
 namespace sgp
 {
 
+/// A side of a vessel's cross-section (the patient's), as an angle from anterior toward the left.
+enum class PhantomSide
+{
+  Anterior,  ///< 0°
+  Left,      ///< 90°
+  Posterior, ///< 180°
+  Right      ///< 270°
+};
+
+double SideDegrees(PhantomSide side);
+/// "anterior", "left", "posterior", "right"; \throws InputError for any other text.
+PhantomSide ParsePhantomSide(const std::string& text, const std::string& parameter);
+
 /// Parameters; defaults equal the XML defaults of SyntheticAorticPhantom (a test compares them).
 struct PhantomParams
 {
@@ -73,6 +86,33 @@ struct PhantomParams
   double boneGapMm = 2.0;
   bool includeKidneys = false;
   double kidneyHu = 180.0;
+
+  // The vessel wall (AorticWall.h). With wallThicknessMm > 0 the diameters above are outer-wall
+  // diameters and the lumen lies inside the wall and the thrombus; with every option at its
+  // default the phantom is the lumen-only phantom. HU defaults from vessel-wall.md §2.
+  double wallThicknessMm = 0.0;                     ///< aorta and iliacs; 0 = no wall; [0, 4]
+  double wallHu = 70.0;                             ///< slightly enhancing wall, 60–90 HU
+  double thrombusMaxThicknessMm = 0.0;              ///< sac ILT at its thickest (mid-sac); 0 = none; [0, 40]
+  bool thrombusConcentric = false;                  ///< false: eccentric crescent, the lumen off-centre
+  PhantomSide thrombusSide = PhantomSide::Anterior; ///< the ILT's thick side (anterior in ≈ 50 %)
+  double thrombusHu = 45.0;                         ///< ILT, 30–60 HU
+  double neckThrombusThicknessMm = 0.0;             ///< crescent in the lower neck; 0 = none; [0, 15]
+  double neckThrombusLengthMm = 10.0;               ///< from the sac's top upward; [3, 60]
+  PhantomSide neckThrombusSide = PhantomSide::Anterior;
+  double calcificationHu = 800.0;      ///< plaque after blurring, 600–1200 HU
+  double sacCalcificationArcDeg = 0.0; ///< an arc over the sac's middle third; 0 = none; [0, 360]
+  PhantomSide sacCalcificationSide = PhantomSide::Posterior;
+  double neckCalcificationArcDeg = 0.0; ///< an arc from the site down 15 mm; 0 = none; [0, 360]
+  PhantomSide neckCalcificationSide = PhantomSide::Left;
+  bool includePsoas = false; ///< both psoas muscles against the sac, posterolateral
+  double psoasHu = 45.0;
+  bool includeIvc = false; ///< unenhanced IVC pressed against the sac's right side
+  double ivcHu = 50.0;
+  bool includeDuodenum = false;      ///< duodenum crossing in front of the neck
+  double duodenumHu = 120.0;         ///< bowel wall in the arterial phase
+  bool includeLeftRenalVein = false; ///< enhancing LRV crossing in front of the aorta below the SMA
+  double leftRenalVeinHu = 200.0;
+  double bolusGradientHuPerCm = 0.0; ///< lumen HU change per cm upward from the site; [−10, 10]
 };
 
 /// Labels of the truth image.
@@ -81,7 +121,15 @@ enum PhantomLabel : unsigned char
   TissueLabel = 0,
   LumenLabel = 1,
   BoneLabel = 2,
-  KidneyLabel = 3
+  KidneyLabel = 3,
+  WallLabel = 4,
+  ThrombusLabel = 5,
+  CalciumLabel = 6,
+  PsoasLabel = 7,
+  IvcLabel = 8,
+  DuodenumLabel = 9,
+  RenalVeinLabel = 10,
+  PhantomLabelCount = 11
 };
 
 /// One vessel's analytic centerline, sampled every 1 mm from its start (points LPS mm, n×3) with
@@ -118,6 +166,19 @@ struct PhantomSizing
   double rightIliacLength = 0.0; ///< aortic bifurcation to the right internal iliac origin
   double leftIliacLength = 0.0;
   double neckAngleBetaDeg = 0.0; ///< β, angle between the neck's axis and the sac's
+
+  // With a wall (PhantomParams::wallThicknessMm > 0) the diameters above are of the lumen, these
+  // of the outer wall, perpendicular to the vessel axis; without one both are the same vessel.
+  double outerProximalNeckDiameter = 0.0;   ///< (a)
+  double outerNeckDiameter15mm = 0.0;       ///< (b)
+  double outerMaxAneurysmDiameter = 0.0;    ///< (c), Dmax outer to outer
+  double outerDistalNeckMinDiameter = 0.0;  ///< (d)
+  double outerRightIliacDiameter = 0.0;     ///< (e)
+  double outerLeftIliacDiameter = 0.0;      ///< (f)
+  double thrombusVolumeMl = 0.0;            ///< site to bifurcation
+  double maxThrombusThicknessMm = 0.0;      ///< over the same stretch
+  double neckThrombusArcPercent = 0.0;      ///< largest share, site to 15 mm below, thicker than 2 mm
+  double neckCalcificationArcPercent = 0.0; ///< largest share, site to 15 mm below
 };
 
 struct PhantomTruth

@@ -37,6 +37,29 @@ TEST(SyntheticAorticPhantomXml, Defaults_EqualPhantomParams)
   EXPECT_EQ(boneGapMm, d.boneGapMm);
   EXPECT_EQ(includeKidneys, d.includeKidneys);
   EXPECT_EQ(kidneyHu, d.kidneyHu);
+  EXPECT_EQ(wallThicknessMm, d.wallThicknessMm);
+  EXPECT_EQ(wallHu, d.wallHu);
+  EXPECT_EQ(thrombusMaxThicknessMm, d.thrombusMaxThicknessMm);
+  EXPECT_EQ(thrombusShape == "concentric", d.thrombusConcentric);
+  EXPECT_EQ(ParsePhantomSide(thrombusSide, "thrombusSide"), d.thrombusSide);
+  EXPECT_EQ(thrombusHu, d.thrombusHu);
+  EXPECT_EQ(neckThrombusThicknessMm, d.neckThrombusThicknessMm);
+  EXPECT_EQ(neckThrombusLengthMm, d.neckThrombusLengthMm);
+  EXPECT_EQ(ParsePhantomSide(neckThrombusSide, "neckThrombusSide"), d.neckThrombusSide);
+  EXPECT_EQ(calcificationHu, d.calcificationHu);
+  EXPECT_EQ(sacCalcificationArcDeg, d.sacCalcificationArcDeg);
+  EXPECT_EQ(ParsePhantomSide(sacCalcificationSide, "sacCalcificationSide"), d.sacCalcificationSide);
+  EXPECT_EQ(neckCalcificationArcDeg, d.neckCalcificationArcDeg);
+  EXPECT_EQ(ParsePhantomSide(neckCalcificationSide, "neckCalcificationSide"), d.neckCalcificationSide);
+  EXPECT_EQ(includePsoas, d.includePsoas);
+  EXPECT_EQ(psoasHu, d.psoasHu);
+  EXPECT_EQ(includeIvc, d.includeIvc);
+  EXPECT_EQ(ivcHu, d.ivcHu);
+  EXPECT_EQ(includeDuodenum, d.includeDuodenum);
+  EXPECT_EQ(duodenumHu, d.duodenumHu);
+  EXPECT_EQ(includeLeftRenalVein, d.includeLeftRenalVein);
+  EXPECT_EQ(leftRenalVeinHu, d.leftRenalVeinHu);
+  EXPECT_EQ(bolusGradientHuPerCm, d.bolusGradientHuPerCm);
 }
 
 } // namespace

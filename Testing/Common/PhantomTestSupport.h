@@ -26,11 +26,11 @@ inline Eigen::Matrix3d ObliqueFlippedDirection()
 /// Voxel counts of a binary segmentation against the truth labels.
 struct Overlap
 {
-  long truthLumen = 0;              ///< voxels labelled lumen in the truth
-  long segmented = 0;               ///< voxels set in the segmentation
-  long both = 0;                    ///< set in both
-  std::array<long, 4> perLabel{};   ///< segmented voxels per truth label
-  std::array<long, 4> labelCount{}; ///< truth voxels per label
+  long truthLumen = 0;                              ///< voxels labelled lumen in the truth
+  long segmented = 0;                               ///< voxels set in the segmentation
+  long both = 0;                                    ///< set in both
+  std::array<long, PhantomLabelCount> perLabel{};   ///< segmented voxels per truth label
+  std::array<long, PhantomLabelCount> labelCount{}; ///< truth voxels per label
 
   double Dice() const { return 2.0 * double(both) / double(truthLumen + segmented); }
   /// Fraction of the truth voxels of `label` that were segmented.
@@ -53,7 +53,7 @@ inline Overlap CompareWithTruth(const LabelImage& segmentation, const LabelImage
   for (long i = 0; i < count; ++i)
   {
     const bool set = s[i] != 0;
-    const unsigned label = t[i] < 4 ? t[i] : 0;
+    const unsigned label = t[i] < PhantomLabelCount ? t[i] : 0;
     overlap.truthLumen += label == LumenLabel;
     overlap.segmented += set;
     overlap.both += set && label == LumenLabel;
