@@ -48,6 +48,8 @@ int main(int argc, char* argv[])
   try
   {
     using namespace sgp;
+    // Inside Slicer, PARSE_ARGS (SEM's GenerateCLP) reads a point's components with atof.
+    ValidatePointArguments(argc, argv, { "seed", "lowestRenalOstium" });
     const PlanOutputPaths paths{ outputLabelMap,     outputCenterlines,       outputLandmarks,
                                  outputStentModel,   outputInitialStentModel, outputSimulatedStentModel,
                                  outputMeasurements, outputDiameterProfile,   outputReport,

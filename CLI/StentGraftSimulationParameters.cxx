@@ -1,5 +1,6 @@
 #include "StentGraftSimulationParameters.h"
 
+#include "CLPSupport.h"
 #include "Common/CheckRange.h"
 #include "Common/Errors.h"
 #include "Common/Format.h"
@@ -128,6 +129,26 @@ ActiveContourParams MakeActiveContourParams(const std::string& acmMode,
   params.maxIterations = acmMaxIterations;
   params.toleranceMm = acmToleranceMm;
   return params;
+}
+
+void ValidatePointArguments(int argc, const char* const argv[], const std::vector<std::string>& pointFlags)
+{
+  for (int i = 1; i + 1 < argc; ++i)
+  {
+    for (const std::string& flag : pointFlags)
+    {
+      if (argv[i] != "--" + flag)
+        continue;
+      try
+      {
+        clp::SplitNumbers<float>(argv[i + 1], flag, 3);
+      }
+      catch (const clp::ParseError& e)
+      {
+        throw InputError(e.what());
+      }
+    }
+  }
 }
 
 void ValidateParameters(const std::string& inputVolume,

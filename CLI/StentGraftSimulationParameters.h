@@ -65,6 +65,14 @@ DeviceSelectionParams MakeDeviceSelectionParams(const std::string& device,
                                                 const std::vector<double>& proximalOversizingRange,
                                                 const std::vector<double>& limbOversizingRange);
 
+/// Checks the text of each point argument on the command line (`--<flag> x,y,z` for every flag
+/// in `pointFlags`): three comma-separated numbers, each complete. Inside Slicer the CLI is built
+/// with SEM's GenerateCLP, which converts each component with `atof` and checks no count, so
+/// `--seed a,b,c` would reach the CLI as the origin; the standalone build's generator already
+/// rejects it, and this check, run on argv after PARSE_ARGS, makes both builds reject it alike.
+/// \throws InputError naming the flag and the text.
+void ValidatePointArguments(int argc, const char* const argv[], const std::vector<std::string>& pointFlags);
+
 /// Checks the inputs a run needs: an input volume, a seed of three numbers, and parameters in
 /// range. \throws InputError naming the value and what was expected.
 void ValidateParameters(const std::string& inputVolume,

@@ -9,6 +9,7 @@
 #include <itkImageSeriesReader.h>
 
 #include "Common/Errors.h"
+#include "IO/RegisterImageIOFactories.h"
 
 namespace sgp
 {
@@ -123,6 +124,7 @@ typename Image::Pointer ReadVolumeFile(const std::string& path)
 
 CtVolume ReadCtImage(const std::string& path)
 {
+  RegisterImageIOFactories(); // done at start-up already; inside Slicer UseITK registers none
   CtVolume volume;
   try
   {
@@ -139,6 +141,7 @@ CtVolume ReadCtImage(const std::string& path)
 
 LabelImage::Pointer ReadLabelMap(const std::string& path)
 {
+  RegisterImageIOFactories();
   try
   {
     return ReadVolumeFile<LabelImage>(path);

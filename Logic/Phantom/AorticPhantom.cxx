@@ -79,6 +79,18 @@ Tube StraightTube(const std::string& name, const std::vector<Point3>& axis, doub
   return { name, axis, [radius](double) { return radius; }, radius };
 }
 
+/// The LPS box {min, max} of a tube's voxels, its radius and `reach` (the blur) around its axis.
+std::array<Point3, 2> TubeBox(const Tube& tube, double reach)
+{
+  Point3 lo = Point3::Constant(1e9), hi = Point3::Constant(-1e9);
+  for (const Point3& v : tube.axis)
+  {
+    lo = lo.cwiseMin(v - Point3::Constant(tube.maxRadius + reach));
+    hi = hi.cwiseMax(v + Point3::Constant(tube.maxRadius + reach));
+  }
+  return { lo, hi };
+}
+
 /// A tube along a sampled curve whose radius is given at each vertex (linear in arc length between).
 Tube SampledTube(const std::string& name, const std::vector<Point3>& axis, const std::vector<double>& radii)
 {
@@ -628,12 +640,7 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
     DrawAorticWall(*anatomy.wall, p, grid, reach, contrast, labels);
     for (const Tube& tube : anatomy.wallTubes)
     {
-      Point3 lo = Point3::Constant(1e9), hi = Point3::Constant(-1e9);
-      for (const Point3& v : tube.axis)
-      {
-        lo = lo.cwiseMin(v - Point3::Constant(tube.maxRadius + reach));
-        hi = hi.cwiseMax(v + Point3::Constant(tube.maxRadius + reach));
-      }
+      const auto [lo, hi] = TubeBox(tube, reach);
       ForEachVoxelNear(grid, lo, hi,
                        [&](long flat, const Point3& x)
                        {
@@ -650,12 +657,7 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
   {
     ReportProgress(progress, 0.7 * double(t) / anatomy.tubes.size(), "Vessels");
     const Tube& tube = anatomy.tubes[t];
-    Point3 lo = Point3::Constant(1e9), hi = Point3::Constant(-1e9);
-    for (const Point3& v : tube.axis)
-    {
-      lo = lo.cwiseMin(v - Point3::Constant(tube.maxRadius + reach));
-      hi = hi.cwiseMax(v + Point3::Constant(tube.maxRadius + reach));
-    }
+    const auto [lo, hi] = TubeBox(tube, reach);
     ForEachVoxelNear(grid, lo, hi,
                      [&](long flat, const Point3& x)
                      {

@@ -9,6 +9,20 @@ foreach(name HOMEPAGE CONTRIBUTORS DESCRIPTION ICONURL SCREENSHOTURLS DEPENDS)
 endforeach()
 sgp_stub_record("include(Slicer_USE_FILE) project=${PROJECT_NAME}")
 
+# As Slicer's UseSlicer.cmake: Slicer registers the ITK IO factories itself (its
+# ITKFactoryRegistration library, called by its CLI launcher), so UseITK must not generate the
+# register managers. Slicer picks the variable names by ITK version (>= 5.3: one per factory
+# kind); ITK is not found yet here, so the stub sets both spellings.
+set(ITK_NO_IO_FACTORY_REGISTER_MANAGER 1)
+foreach(factory_uc IN ITEMS "IMAGEIO" "MESHIO" "TRANSFORMIO")
+  set(ITK_NO_${factory_uc}_FACTORY_REGISTER_MANAGER 1)
+endforeach()
+
+# As Slicer's UseSlicer.cmake: SEMMacroBuildCLI puts the CLIs in Slicer's CLI folder of the build tree.
+set(SlicerExecutionModel_DEFAULT_CLI_RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${Slicer_CLIMODULES_BIN_DIR}")
+set(SlicerExecutionModel_DEFAULT_CLI_LIBRARY_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${Slicer_CLIMODULES_LIB_DIR}")
+set(SlicerExecutionModel_DEFAULT_CLI_ARCHIVE_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${Slicer_CLIMODULES_LIB_DIR}")
+
 # slicerMacroBuildScriptedModule(NAME <name> SCRIPTS <py...> RESOURCES <files...>
 #                                [WITH_GENERIC_TESTS] [WITH_SUBDIR] [VERBOSE])
 function(slicerMacroBuildScriptedModule)
