@@ -340,14 +340,9 @@ std::array<Point3, 2> AnatomyBounds(const Anatomy& anatomy)
   }
   if (anatomy.wall)
   {
-    double reach = anatomy.wall->MaxOuterRadius();
-    for (const WallNeighbour& n : anatomy.wall->Neighbours())
-      reach = std::max(reach, anatomy.wall->MaxOuterRadius() + n.thicknessMm);
-    for (const double h : { 0.0, anatomy.wall->TopH() })
-    {
-      lo = lo.cwiseMin(anatomy.wall->AxisPoint(h) - Point3::Constant(reach));
-      hi = hi.cwiseMax(anatomy.wall->AxisPoint(h) + Point3::Constant(reach));
-    }
+    const auto [wallLo, wallHi] = anatomy.wall->BoundsLps(0.0);
+    lo = lo.cwiseMin(wallLo);
+    hi = hi.cwiseMax(wallHi);
   }
   if (anatomy.column)
   {
@@ -473,16 +468,8 @@ void DrawAorticWall(const AorticWall& wall,
                     std::vector<float>& contrast,
                     std::vector<unsigned char>& labels)
 {
-  double outward = wall.MaxOuterRadius();
-  for (const WallNeighbour& n : wall.Neighbours())
-    outward = std::max(outward, wall.MaxOuterRadius() + n.thicknessMm);
-  outward += reach;
-  Point3 lo = Point3::Constant(1e9), hi = Point3::Constant(-1e9);
-  for (const double h : { 0.0, wall.TopH(), std::min(wall.TopH(), 1e9) })
-  {
-    lo = lo.cwiseMin(wall.AxisPoint(h) - Point3::Constant(outward));
-    hi = hi.cwiseMax(wall.AxisPoint(h) + Point3::Constant(outward));
-  }
+  const double outward = wall.ReachMm() + reach;
+  const auto [lo, hi] = wall.BoundsLps(reach);
   const double sigma = p.blurSigmaMm;
   ForEachVoxelNear(grid, lo, hi,
                    [&](long flat, const Point3& x)

@@ -88,6 +88,21 @@ Point3 AorticWall::AxisPoint(double h) const
   return Point3(0, 0, m_SacTop) + (h - m_SacTop) * Point3(0.0, -std::sin(m_Beta), std::cos(m_Beta));
 }
 
+double AorticWall::ReachMm() const
+{
+  double reach = m_MaxOuter;
+  for (const WallNeighbour& n : m_Neighbours)
+    reach = std::max(reach, m_MaxOuter + n.thicknessMm);
+  return reach;
+}
+
+std::array<Point3, 2> AorticWall::BoundsLps(double marginMm) const
+{
+  const Point3 r = Point3::Constant(ReachMm() + marginMm);
+  const Point3 a = AxisPoint(0.0), b = AxisPoint(m_TopH);
+  return { a.cwiseMin(b) - r, a.cwiseMax(b) + r };
+}
+
 std::array<Eigen::Vector3d, 2> AorticWall::Frame(double h) const
 {
   const double lean = h <= m_SacTop ? 0.0 : m_Beta;

@@ -115,6 +115,12 @@ public:
   double WallMm() const { return m_WallMm; }
   double TopH() const { return m_TopH; }
   double MaxOuterRadius() const { return m_MaxOuter; }
+  /// How far from the axis anything of the wall reaches: the widest outer wall plus the thickest
+  /// neighbour pad, mm.
+  double ReachMm() const;
+  /// The LPS box {min, max} of everything of the wall, grown by `marginMm`. (The axis runs
+  /// monotonically in each coordinate, so its two ends bound it.)
+  std::array<Point3, 2> BoundsLps(double marginMm) const;
   const std::vector<WallCalcification>& Calcifications() const { return m_Calcifications; }
   const std::vector<WallNeighbour>& Neighbours() const { return m_Neighbours; }
 

@@ -5,10 +5,13 @@
 
 #include <optional>
 
+#include <gtest/gtest.h>
+
 #include "Centerlines/AssignInscribedRadii.h"
 #include "Centerlines/LabelAortoIliacTree.h"
 #include "Centerlines/ThinLabelMap.h"
 #include "Measurement/MeasureAnatomy.h"
+#include "Phantom/AorticPhantom.h"
 #include "Segmentation/GrowLumenRegion.h"
 #include "Stent/ActiveContour.h"
 
@@ -64,6 +67,17 @@ inline MeasuredPlan MeasureFromCt(const CtImage& ct,
   plan.site = FindProximalSite(plan.tree, lowestRenalOstiumLps);
   FitAndMeasure(plan);
   return plan;
+}
+
+/// (a)–(f) of `m` each within `diameterMm` of the phantom's truth (the same six in every test).
+inline void ExpectDiametersNear(const Measurements& m, const PhantomSizing& truth, double diameterMm)
+{
+  EXPECT_NEAR(m.Value("proximalNeckDiameter"), truth.proximalNeckDiameter, diameterMm);
+  EXPECT_NEAR(m.Value("neckDiameter15mm"), truth.neckDiameter15mm, diameterMm);
+  EXPECT_NEAR(m.Value("maxAneurysmDiameter"), truth.maxAneurysmDiameter, diameterMm);
+  EXPECT_NEAR(m.Value("distalNeckMinDiameter"), truth.distalNeckMinDiameter, diameterMm);
+  EXPECT_NEAR(m.Value("rightIliacDiameter"), truth.rightIliacDiameter, diameterMm);
+  EXPECT_NEAR(m.Value("leftIliacDiameter"), truth.leftIliacDiameter, diameterMm);
 }
 
 } // namespace sgp::testing

@@ -52,12 +52,7 @@ Point3 TruthLandmark(const AorticPhantom& phantom, const std::string& name)
 void ExpectSizing(const Measurements& m, const AorticPhantom& phantom, double diameterMm)
 {
   const PhantomSizing& truth = phantom.truth.sizing;
-  EXPECT_NEAR(m.Value("proximalNeckDiameter"), truth.proximalNeckDiameter, diameterMm);
-  EXPECT_NEAR(m.Value("neckDiameter15mm"), truth.neckDiameter15mm, diameterMm);
-  EXPECT_NEAR(m.Value("maxAneurysmDiameter"), truth.maxAneurysmDiameter, diameterMm);
-  EXPECT_NEAR(m.Value("distalNeckMinDiameter"), truth.distalNeckMinDiameter, diameterMm);
-  EXPECT_NEAR(m.Value("rightIliacDiameter"), truth.rightIliacDiameter, diameterMm);
-  EXPECT_NEAR(m.Value("leftIliacDiameter"), truth.leftIliacDiameter, diameterMm);
+  testing::ExpectDiametersNear(m, truth, diameterMm);
   EXPECT_NEAR(m.Value("proximalNeckLength"), truth.proximalNeckLength, neckLengthMm);
   EXPECT_NEAR(m.Value("proximalSiteToBifurcationLength"), truth.proximalSiteToBifurcationLength, siteToBifurcationMm);
   EXPECT_NEAR(m.Value("rightIliacLength"), truth.rightIliacLength, iliacLengthMm);

@@ -12,6 +12,7 @@
 #include "Phantom/AorticPhantom.h"
 #include "Pipeline/PlanRepair.h"
 #include "Pipeline/PlanValues.h"
+#include "PipelineSupport.h"
 
 namespace sgp
 {
@@ -65,12 +66,7 @@ TEST_F(DefaultPhantomPlan, SizingDiameters_WithinTheBarOfTheTruth)
   ASSERT_TRUE(plan->Reached(PlanStage::Device));
   const Measurements& m = plan->measurements;
   const PhantomSizing& truth = phantom->truth.sizing;
-  EXPECT_NEAR(m.Value("proximalNeckDiameter"), truth.proximalNeckDiameter, diameterMm);
-  EXPECT_NEAR(m.Value("neckDiameter15mm"), truth.neckDiameter15mm, diameterMm);
-  EXPECT_NEAR(m.Value("maxAneurysmDiameter"), truth.maxAneurysmDiameter, diameterMm);
-  EXPECT_NEAR(m.Value("distalNeckMinDiameter"), truth.distalNeckMinDiameter, diameterMm);
-  EXPECT_NEAR(m.Value("rightIliacDiameter"), truth.rightIliacDiameter, diameterMm);
-  EXPECT_NEAR(m.Value("leftIliacDiameter"), truth.leftIliacDiameter, diameterMm);
+  testing::ExpectDiametersNear(m, truth, diameterMm);
 }
 
 TEST_F(DefaultPhantomPlan, ProximalSite_FromTheRenalBranches)
