@@ -13,6 +13,7 @@
 #include "CLPSupport.h"
 #include "IO/ReadCtImage.h"
 #include "IO/ReadDeviceCatalog.h"
+#include "IO/ReadNeckRules.h"
 #include "IO/WriteImage.h"
 #include "IO/WritePlanOutputs.h"
 #include "Pipeline/PlanRepair.h"
@@ -50,10 +51,19 @@ int main(int argc, char* argv[])
     using namespace sgp;
     // Inside Slicer, PARSE_ARGS (SEM's GenerateCLP) reads a point's components with atof.
     ValidatePointArguments(argc, argv, { "seed", "lowestRenalOstium" });
-    const PlanOutputPaths paths{ outputLabelMap,     outputCenterlines,       outputLandmarks,
-                                 outputStentModel,   outputInitialStentModel, outputSimulatedStentModel,
-                                 outputMeasurements, outputDiameterProfile,   outputReport,
-                                 returnParameterFile };
+    PlanOutputPaths paths;
+    paths.labelMap = outputLabelMap;
+    paths.wallLabelMap = outputWallLabelMap;
+    paths.outerWallModel = outputOuterWallModel;
+    paths.centerlines = outputCenterlines;
+    paths.landmarks = outputLandmarks;
+    paths.stentModel = outputStentModel;
+    paths.initialStentModel = outputInitialStentModel;
+    paths.simulatedStentModel = outputSimulatedStentModel;
+    paths.measurements = outputMeasurements;
+    paths.diameterProfile = outputDiameterProfile;
+    paths.report = outputReport;
+    paths.returnParameterFile = returnParameterFile;
     const auto contour = [&](const std::string& mode, const std::vector<double>& diametersMm)
     {
       return MakeActiveContourParams(mode, measureStiffnessWeights, measureBalloonRadiusMm, measureBalloonPressure,
@@ -77,7 +87,10 @@ int main(int argc, char* argv[])
     if (!lowestRenalOstium.empty())
       request.lowestRenalOstiumLps = RasToLps(lowestRenalOstium);
     // The catalogue is read before any heavy work: a broken catalogue or unknown --device fails at once.
-    const PlanRunInfo run{ inputVolume, deviceCatalog.empty() ? DefaultDeviceCatalog(argv[0]) : deviceCatalog };
+    const PlanRunInfo run{ inputVolume, deviceCatalog.empty() ? DefaultDeviceCatalog(argv[0]) : deviceCatalog,
+                           neckRules.empty() ? DefaultNeckRulesPath(argv[0]) : neckRules };
+    if (request.through >= PlanStage::Measurements)
+      params.neckRules = ReadNeckRules(run.neckRules);
     if (request.through == PlanStage::Device)
     {
       params.catalog = ReadDeviceCatalog(run.deviceCatalog);
@@ -90,6 +103,7 @@ int main(int argc, char* argv[])
                                          { "ThinLumen", 2.0 },
                                          { "ExtractCenterlines", 1.0 },
                                          { "FitStent", 2.0 },
+                                         { "SegmentOuterWall", 0.5 },
                                          { "MeasureAnatomy", 0.2 },
                                          { "SelectDevice", 0.1 },
                                          { "SimulateGraft", 1.0 },

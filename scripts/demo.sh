@@ -13,9 +13,12 @@ demo="$SGP_BUILD/demo"
 mkdir -p "$demo"
 cli="$SGP_BUILD/CLI"
 
-echo "== Generating the phantom (0.8 x 0.8 x 1.0 mm, noise 20 HU, vertebra 2 mm from the sac, kidneys)"
+echo "== Generating the phantom (0.8 x 0.8 x 1.0 mm, noise 20 HU, vertebra 2 mm from the sac, kidneys;"
+echo "   a 1.5 mm wall in fat, a 12 mm crescent of sac thrombus, 14 mm common iliacs)"
 "$cli/SyntheticAorticPhantom" "$demo/phantom.nrrd" --outputTruth "$demo/truth.json" \
   --outputTruthLabelMap "$demo/truth-labels.nrrd" --includeBone --includeKidneys \
+  --wallThicknessMm 1.5 --thrombusMaxThicknessMm 12 --tissueHu -100 \
+  --rightIliacDiameterMm 14 --leftIliacDiameterMm 14 \
   --returnparameterfile "$demo/phantom.params" >/dev/null
 seed=$(sed -n 's/^seedRas = //p' "$demo/phantom.params")
 
@@ -25,6 +28,7 @@ echo "== Running StentGraftSimulation (seed $seed, RAS)"
   --outputLandmarks "$demo/landmarks.mrk.json" --outputStentModel "$demo/stent.vtp" \
   --outputSimulatedStentModel "$demo/graft.vtp" --outputMeasurements "$demo/measurements.csv" \
   --outputDiameterProfile "$demo/profile.csv" --outputReport "$demo/report.json" \
+  --outputWallLabelMap "$demo/wall.nrrd" --outputOuterWallModel "$demo/outer-wall.vtp" \
   --returnparameterfile "$demo/results.params" >"$demo/run.log"
 
 "$SGP_PYTHON" - "$demo" <<'PY'
@@ -51,12 +55,23 @@ print("  proximal implantation site: from the %s (%s), %.1f mm down the aorta"
 print()
 print("  measurement                         measured      truth    error")
 sizing = truth["sizing"]
-truth_of = dict(sizing, neckAngleBeta=sizing["neckAngleBetaDeg"])
+# (a)-(f) are outer-wall values (the truth's outer* keys); the lumen values are the truth's plain keys.
+truth_of = dict(neckAngleBeta=sizing["neckAngleBetaDeg"], thrombusVolume=sizing.get("thrombusVolumeMl"),
+                maxThrombusThickness=sizing.get("maxThrombusThicknessMm"),
+                neckThrombusArc=sizing.get("neckThrombusArcPercent"),
+                neckCalcificationArc=sizing.get("neckCalcificationArcPercent"))
+for key in ("proximalNeckLength", "proximalSiteToBifurcationLength", "rightIliacLength", "leftIliacLength"):
+    truth_of[key] = sizing[key]
+for outer in ("proximalNeckDiameter", "neckDiameter15mm", "maxAneurysmDiameter", "distalNeckMinDiameter",
+              "rightIliacDiameter", "leftIliacDiameter"):
+    truth_of[outer] = sizing["outer" + outer[0].upper() + outer[1:]]
+    truth_of[outer.replace("Diameter", "LumenDiameter")] = sizing[outer]
 for m in report["measurements"]:
     value = m["value"]
     shown = "%8.1f %-5s" % (value, m["unit"]) if value is not None else "   not measured"
     t = truth_of.get(m["name"])
-    print("  %-34s %s %s" % (m["name"], shown,
+    label = m["name"] + (" (%s)" % m["wall"] if m.get("wall") else "")
+    print("  %-42s %s %s" % (label, shown,
                             "%7.1f  %+6.2f" % (t, value - t) if t is not None and value is not None else ""))
 device = report.get("device") or {}
 recommendation = device.get("recommendation") or {}
@@ -86,6 +101,8 @@ for name, what in (("phantom.nrrd", "CT volume (HU)"), ("truth.json", "analytic 
                    ("landmarks.mrk.json", "landmarks (Slicer markups)"),
                    ("stent.vtp", "stent surface fitted in measure mode"),
                    ("graft.vtp", "simulated graft (Oversizing, Apposition, Sealing)"),
+                   ("wall.nrrd", "vessel wall label map (1 lumen, 2 thrombus and wall, 3 calcium)"),
+                   ("outer-wall.vtp", "outer wall surface (ThrombusThicknessMm, Supported)"),
                    ("measurements.csv", "measurements table"), ("profile.csv", "diameter profiles"),
                    ("report.json", "the whole plan"), ("results.params", "SEM return parameters")):
     print("  %-18s %s" % (name, what))

@@ -175,6 +175,11 @@ std::string DescribeCatalogField(const std::string& origin,
   return text + ", field '" + field + "'";
 }
 
+const char* ToString(DiameterReference reference)
+{
+  return reference == DiameterReference::Lumen ? "lumen" : "outerWall";
+}
+
 void ValidateDeviceCatalog(const DeviceCatalog& catalog)
 {
   if (catalog.formatVersion != DeviceCatalogFormatVersion)

@@ -78,12 +78,25 @@ struct DeviceIfu
   IfuLimit iliacDiameterMm;   ///< both bounds, mm
 };
 
+/// Which diameter a family's IFU ranges (neck, iliac) and oversizing are stated on.
+enum class DiameterReference
+{
+  OuterWall, ///< outer wall to outer wall (every IFU of the shipped catalogue)
+  Lumen      ///< lumen to lumen
+};
+
+/// "outerWall" / "lumen", the catalogue's spelling.
+const char* ToString(DiameterReference reference);
+
 struct DeviceFamily
 {
   std::string name;         ///< unique in the catalogue, non-empty, without ':'
   std::string manufacturer; ///< may be empty
   std::string source;       ///< where the figures come from; non-empty
   std::string note;         ///< "verify against the current IFU"
+  /// The diameter its ranges use (catalogue field "diameterReference", required): sizing, the IFU
+  /// diameter checks and the limb choice use the anatomy's diameters on that wall.
+  DiameterReference diameterReference = DiameterReference::OuterWall;
   DeviceComponent mainBodies;
   DeviceComponent limbs;
   DeviceIfu ifu;

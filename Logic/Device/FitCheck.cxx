@@ -46,7 +46,8 @@ FitCheck CheckGraftFit(const StentMesh& mesh,
                        const Measurements& measured,
                        const CenterlineTree& tree,
                        const std::array<double, 3>& graft,
-                       const FitCheckParams& p)
+                       const FitCheckParams& p,
+                       const VesselWall* wall)
 {
   const Eigen::Index n = mesh.V.rows();
   if (V.rows() != n || wallDistanceMm.size() != n)
@@ -58,6 +59,15 @@ FitCheck CheckGraftFit(const StentMesh& mesh,
       throw InputError("The measurements have " + std::to_string(measured.profiles[seg].rings.size()) +
                        " rings on segment " + std::to_string(seg) + "; expected the mesh's " +
                        std::to_string(mesh.RingsIn(seg)) + " (measure and simulate the same mesh).");
+  // The vessel diameter under ring k of segment seg, and whether it is the outer wall's.
+  const auto vesselAt = [&](int seg, int k, bool& outer)
+  {
+    const double s = mesh.ringAbscissaMm[seg][std::size_t(k)];
+    const OuterWallPlane* plane = wall ? wall->vessels[seg].Nearest(s) : nullptr;
+    outer = plane && plane->Usable() && std::abs(plane->abscissaMm - s) <= 0.5 * wall->stepMm + 1e-9;
+    return outer ? plane->areaDiameterMm : measured.profiles[seg].rings[std::size_t(k)].meanMm;
+  };
+  int outerSummaries = 0;
   FitCheck c;
   c.oversizingPercent.resize(n);
   c.appositionMm.resize(n);
@@ -65,8 +75,8 @@ FitCheck CheckGraftFit(const StentMesh& mesh,
   for (Eigen::Index v = 0; v < n; ++v)
   {
     const int seg = mesh.segment[v], k = mesh.ring[v];
-    const double vessel = measured.profiles[seg].rings[k].meanMm;
-    c.oversizingPercent[v] = OversizingPercent(graft[seg], vessel);
+    bool outer = false;
+    c.oversizingPercent[v] = OversizingPercent(graft[seg], vesselAt(seg, k, outer));
     c.appositionMm[v] = std::max(0.0, -wallDistanceMm[v]);
     c.sealing[v] = c.appositionMm[v] <= p.contactToleranceMm ? 1 : 0;
   }
@@ -88,12 +98,21 @@ FitCheck CheckGraftFit(const StentMesh& mesh,
       --m;
     *iliacSeal[side] = m == last ? 0.0 : s[last] - s[std::max(m, 0)];
     std::vector<double> zone;
+    bool allOuter = true;
     for (int r = 0; r <= last; ++r)
       if (s[r] >= s[last] - landingZoneMm - 1e-9)
-        zone.push_back(OversizingPercent(graft[seg], measured.profiles[seg].rings[r].meanMm));
+      {
+        bool outer = false;
+        zone.push_back(OversizingPercent(graft[seg], vesselAt(seg, r, outer)));
+        allOuter = allOuter && outer;
+      }
     *limbOversizing[side] = Median(zone);
+    outerSummaries += allOuter ? 1 : 0;
   }
-  c.proximalOversizingPercent = OversizingPercent(graft[TrunkSegment], measured.profiles[TrunkSegment].rings[0].meanMm);
+  bool outerTop = false;
+  c.proximalOversizingPercent = OversizingPercent(graft[TrunkSegment], vesselAt(TrunkSegment, 0, outerTop));
+  outerSummaries += outerTop ? 1 : 0;
+  c.oversizingWall = outerSummaries == 3 ? "outer" : outerSummaries == 0 ? "lumen" : "mixed";
 
   // Ostia under the graft.
   const struct
@@ -153,23 +172,30 @@ FitCheck CheckGraftFit(const StentMesh& mesh,
 std::vector<Measurement> FitCheckRows(const FitCheck& c, const StentMesh& mesh)
 {
   const double top = mesh.ringAbscissaMm[TrunkSegment].front();
-  return {
+  const double rightEnd = mesh.ringAbscissaMm[RightLegSegment].back(),
+               leftEnd = mesh.ringAbscissaMm[LeftLegSegment].back();
+  const std::string over = c.oversizingWall == "outer"   ? "outer wall"
+                           : c.oversizingWall == "lumen" ? "lumen"
+                                                         : "outer wall where traced, else lumen";
+  std::vector<Measurement> rows = {
     { "proximalSealLength", c.proximalSealLengthMm, "mm",
-      "simulated graft: length from its top down to the first ring not in contact with the wall", "aorta", top },
+      "simulated graft: length from its top down to the first ring not in contact with the lumen wall", "aorta", top },
     { "rightIliacSealLength", c.rightIliacSealLengthMm, "mm",
-      "simulated graft: length from the right leg's distal end up to the first ring not in contact", "rightIliac",
-      mesh.ringAbscissaMm[RightLegSegment].back() },
+      "simulated graft: length from the right leg's distal end up to the first ring not in contact with the lumen wall",
+      "rightIliac", rightEnd },
     { "leftIliacSealLength", c.leftIliacSealLengthMm, "mm",
-      "simulated graft: length from the left leg's distal end up to the first ring not in contact", "leftIliac",
-      mesh.ringAbscissaMm[LeftLegSegment].back() },
-    { "proximalOversizing", c.proximalOversizingPercent, "%", "main body diameter over (a), minus 1", "aorta", top },
+      "simulated graft: length from the left leg's distal end up to the first ring not in contact with the lumen wall",
+      "leftIliac", leftEnd },
+    { "proximalOversizing", c.proximalOversizingPercent, "%",
+      "main body diameter over (a) at the graft's top, minus 1, " + over, "aorta", top },
     { "rightLimbOversizing", c.rightLimbOversizingPercent, "%",
-      "right limb diameter over the common iliac's landing zone diameter, minus 1", "rightIliac",
-      mesh.ringAbscissaMm[RightLegSegment].back() },
+      "right limb diameter over the common iliac's landing zone diameter, minus 1, " + over, "rightIliac", rightEnd },
     { "leftLimbOversizing", c.leftLimbOversizingPercent, "%",
-      "left limb diameter over the common iliac's landing zone diameter, minus 1", "leftIliac",
-      mesh.ringAbscissaMm[LeftLegSegment].back() },
+      "left limb diameter over the common iliac's landing zone diameter, minus 1, " + over, "leftIliac", leftEnd },
   };
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    rows[i].wall = i < 3 ? "lumen" : c.oversizingWall == "mixed" ? "outer" : c.oversizingWall;
+  return rows;
 }
 
 } // namespace sgp

@@ -8,7 +8,12 @@
 /// read off the measure-mode fit of the same mesh (their ring profiles give the vessel diameter
 /// under every ring); the labelled centerlines (for the ostia); the device's nominal diameters.
 ///
-/// Per vertex: **Oversizing** = (device diameter / vessel diameter at its ring − 1) × 100 %;
+/// Per vertex: **Oversizing** = (device diameter / vessel diameter at its ring − 1) × 100 %, the
+/// vessel diameter on the outer wall (the traced plane within a step of the ring, area-equivalent,
+/// as the IFU's oversizing is stated) where a `wall` is given and traced there, else the lumen's
+/// ring mean; `oversizingWall` says which the summary values used ("outer", "lumen", "mixed").
+/// Apposition and sealing are against the lumen: the graft presses on the thrombus, not through
+/// it;
 /// **Apposition** = the gap between the graft and the wall, max(0, −φ) mm (0: on the wall);
 /// **Sealing** = 1 where the vertex is within `contactToleranceMm` of the wall. A ring seals when
 /// at least `sealedRingFraction` of its vertices do.
@@ -30,6 +35,7 @@
 #include <vector>
 
 #include "Measurement/MeasureAnatomy.h"
+#include "Wall/VesselWall.h"
 
 namespace sgp
 {
@@ -67,8 +73,9 @@ struct FitCheck
   double rightLimbOversizingPercent = 0.0; ///< over the leg's distal 15 mm (median)
   double leftLimbOversizingPercent = 0.0;
   std::vector<OstiumCoverage> ostia;
-  bool migrationRisk = false;        ///< proximal seal shorter than its minimum
-  std::vector<std::string> findings; ///< the problems, one line each
+  bool migrationRisk = false;           ///< proximal seal shorter than its minimum
+  std::string oversizingWall = "lumen"; ///< the wall the three summary oversizings are over
+  std::vector<std::string> findings;    ///< the problems, one line each
   bool Passed() const { return findings.empty(); }
   /// The covered ostia's branch names joined by ", ", or "none".
   std::string CoveredOstia() const;
@@ -81,7 +88,8 @@ FitCheck CheckGraftFit(const StentMesh& mesh,
                        const Measurements& measured,
                        const CenterlineTree& tree,
                        const std::array<double, 3>& graftDiametersMm,
-                       const FitCheckParams& params = {});
+                       const FitCheckParams& params = {},
+                       const VesselWall* wall = nullptr);
 
 /// The fit check's numbers as table rows (Measurement: name, value, unit, definition, vessel,
 /// abscissa) — the CLI's return parameters of the same names.

@@ -186,13 +186,15 @@ void AddSideChecks(const std::string& side,
                  ifu.iliacSealLengthMm.evidence));
 }
 
-FamilyEvaluation EvaluateFamily(const SizingAnatomy& a,
+FamilyEvaluation EvaluateFamily(const SizingAnatomy& anatomy,
                                 const DeviceCatalog& catalog,
                                 int index,
                                 const DeviceSelectionParams& p,
                                 double forcedDiameterMm)
 {
   const DeviceFamily& family = catalog.families[size_t(index)];
+  // The diameters on the wall this family's IFU is stated on.
+  const SizingAnatomy a = anatomy.On(family.diameterReference);
   const DeviceIfu& ifu = family.ifu;
   FamilyEvaluation e;
   e.family = family.name;
@@ -263,7 +265,7 @@ void Recommend(DeviceSelection& s)
     return std::make_pair(e.Count(CheckStatus::Indeterminate) > 0, distance);
   };
   for (int i = 0; i < int(s.families.size()); ++i)
-    if (s.forced || (s.families[size_t(i)].WithinIfu() &&
+    if (s.forced || (s.families[size_t(i)].WithinIfu() && s.families[size_t(i)].mainBody.Chosen() &&
                      (best < 0 || rank(s.families[size_t(i)]) < rank(s.families[size_t(best)]))))
       best = i;
   s.recommended = best;
@@ -274,6 +276,9 @@ void Recommend(DeviceSelection& s)
       for (const CriterionCheck& c : e.checks)
         if (c.status == CheckStatus::Fail)
           s.reasons.push_back(e.family + ": " + c.text);
+    for (const FamilyEvaluation& e : s.families)
+      if (e.WithinIfu() && !e.mainBody.Chosen())
+        s.reasons.push_back(e.family + ": no main body sized (" + e.mainBody.reason + ")");
     return;
   }
   const FamilyEvaluation& e = s.families[size_t(best)];
@@ -367,6 +372,10 @@ void ValidateSizingAnatomy(const SizingAnatomy& a)
   CheckMeasurement("neckAngleAlphaDeg", a.neckAngleAlphaDeg, 0.0, 180.0, false, "deg");
   CheckMeasurement("rightIliacDiameterMm", a.rightIliacDiameterMm, 0.0, big, true, "mm");
   CheckMeasurement("leftIliacDiameterMm", a.leftIliacDiameterMm, 0.0, big, true, "mm");
+  CheckMeasurement("proximalNeckLumenDiameterMm", a.proximalNeckLumenDiameterMm, 0.0, big, true, "mm");
+  CheckMeasurement("neckLumenDiameter15mmMm", a.neckLumenDiameter15mmMm, 0.0, big, true, "mm");
+  CheckMeasurement("rightIliacLumenDiameterMm", a.rightIliacLumenDiameterMm, 0.0, big, true, "mm");
+  CheckMeasurement("leftIliacLumenDiameterMm", a.leftIliacLumenDiameterMm, 0.0, big, true, "mm");
   CheckMeasurement("rightIliacSealLengthMm", a.rightIliacSealLengthMm, 0.0, big, false, "mm");
   CheckMeasurement("leftIliacSealLengthMm", a.leftIliacSealLengthMm, 0.0, big, false, "mm");
   CheckMeasurement("rightAccessMinDiameterMm", a.rightAccessMinDiameterMm, 0.0, big, true, "mm");
@@ -399,6 +408,19 @@ DeviceSelection SelectDevice(const SizingAnatomy& anatomy,
   return s;
 }
 
+SizingAnatomy SizingAnatomy::On(DiameterReference reference) const
+{
+  SizingAnatomy a = *this;
+  if (reference == DiameterReference::Lumen)
+  {
+    a.proximalNeckDiameterMm = proximalNeckLumenDiameterMm;
+    a.neckDiameter15mmMm = neckLumenDiameter15mmMm;
+    a.rightIliacDiameterMm = rightIliacLumenDiameterMm;
+    a.leftIliacDiameterMm = leftIliacLumenDiameterMm;
+  }
+  return a;
+}
+
 SizingAnatomy SizingFromMeasurements(const Measurements& m)
 {
   SizingAnatomy a;
@@ -409,6 +431,10 @@ SizingAnatomy SizingFromMeasurements(const Measurements& m)
   a.neckAngleAlphaDeg = m.Value("neckAngleAlpha");
   a.rightIliacDiameterMm = m.Value("rightIliacDiameter");
   a.leftIliacDiameterMm = m.Value("leftIliacDiameter");
+  a.proximalNeckLumenDiameterMm = m.Value("proximalNeckLumenDiameter");
+  a.neckLumenDiameter15mmMm = m.Value("neckLumenDiameter15mm");
+  a.rightIliacLumenDiameterMm = m.Value("rightIliacLumenDiameter");
+  a.leftIliacLumenDiameterMm = m.Value("leftIliacLumenDiameter");
   a.rightIliacSealLengthMm = m.Value("rightIliacLength");
   a.leftIliacSealLengthMm = m.Value("leftIliacLength");
   a.rightAccessMinDiameterMm = m.Value("rightAccessMinDiameter");

@@ -2,7 +2,9 @@
 /// Device selection for EVAR: per catalogue family, the main body and limbs that give the
 /// wanted oversizing, the IFU check of the measured anatomy, and the recommended device.
 ///
-/// **Sizing.** Oversizing = (device diameter / vessel diameter − 1) × 100 %. For each family the
+/// **Sizing.** Every diameter below is on the wall the family's catalogue entry names
+/// (`diameterReference`: outer wall for every shipped family; SizingAnatomy::On).
+/// Oversizing = (device diameter / vessel diameter − 1) × 100 %. For each family the
 /// main body is the catalogue size whose oversizing of the proximal neck diameter is nearest the
 /// target — the middle of [proximalOversizingMinPercent, proximalOversizingMaxPercent] (15 % by
 /// default) — among the sizes inside that range (limits inclusive, to 1e-9 %); a tie goes to the
@@ -24,9 +26,11 @@
 ///   profile or the largest limb profile), and "proximal site to bifurcation" (≥ the shortest
 ///   main body length to the flow divider; only for families whose catalogue gives it).
 ///
-/// **Recommendation.** Among families with no failing check, those with no indeterminate check
-/// come first; within that group the family whose main-body oversizing is nearest the target
-/// (a family without a chosen body last; ties in catalogue order). None: "no device within
+/// **Recommendation.** Among families with no failing check and a chosen main body (a family
+/// whose main body could not be sized — its diameter not measured — has nothing to implant and is
+/// never recommended; `reasons` says so), those with no indeterminate check come first; within
+/// that group the family whose main-body oversizing is nearest the target (ties in catalogue
+/// order). None: "no device within
 /// IFU", and `reasons` lists every failing check of every family. A forced device (--device
 /// "Family" or "Family:diameter") is the only family evaluated and is the recommendation, its
 /// main body that diameter (its oversizing check fails if outside the range), flagged when it
@@ -52,18 +56,24 @@
 namespace sgp
 {
 
-/// The measurements that sizing needs, outer wall to outer wall where the IFU says so (the
-/// caller states which diameter definition it passes). Each NaN when not measured.
+/// The measurements that sizing needs. The four sizing diameters come on both walls: outer wall
+/// to outer wall (the fields without "Lumen") and lumen to lumen; each family is sized on the
+/// one its catalogue entry names (DeviceFamily::diameterReference, through On()). Each NaN when
+/// not measured.
 struct SizingAnatomy
 {
   static constexpr double NotMeasured = std::numeric_limits<double>::quiet_NaN();
-  double proximalNeckDiameterMm = NotMeasured;            ///< (a) at the proximal implantation site, > 0
-  double neckDiameter15mmMm = NotMeasured;                ///< (b) 15 mm below it, > 0
+  double proximalNeckDiameterMm = NotMeasured;            ///< (a) outer wall at the proximal implantation site, > 0
+  double neckDiameter15mmMm = NotMeasured;                ///< (b) outer wall 15 mm below it, > 0
+  double proximalNeckLumenDiameterMm = NotMeasured;       ///< (a) lumen, > 0
+  double neckLumenDiameter15mmMm = NotMeasured;           ///< (b) lumen, > 0
+  double rightIliacLumenDiameterMm = NotMeasured;         ///< (e) lumen, > 0
+  double leftIliacLumenDiameterMm = NotMeasured;          ///< (f) lumen, > 0
   double proximalNeckLengthMm = NotMeasured;              ///< from the lowest renal to the aneurysm onset, ≥ 0
   double neckAngleBetaDeg = NotMeasured;                  ///< infrarenal neck vs aneurysm long axis, [0, 180]
   double neckAngleAlphaDeg = NotMeasured;                 ///< suprarenal aorta vs neck axis, [0, 180]
-  double rightIliacDiameterMm = NotMeasured;              ///< (e) common iliac at the limb's seal, > 0
-  double leftIliacDiameterMm = NotMeasured;               ///< (f), > 0
+  double rightIliacDiameterMm = NotMeasured;              ///< (e) outer wall, common iliac at the limb's seal, > 0
+  double leftIliacDiameterMm = NotMeasured;               ///< (f) outer wall, > 0
   double rightIliacSealLengthMm = NotMeasured;            ///< common iliac length available for the seal, ≥ 0
   double leftIliacSealLengthMm = NotMeasured;             ///< ≥ 0
   double rightAccessMinDiameterMm = NotMeasured;          ///< minimum external iliac lumen diameter, > 0
@@ -72,6 +82,8 @@ struct SizingAnatomy
   /// How far the measured neck length may lie from the true one, mm (≥ 0; 0 for an exact
   /// input): a neck-length margin within it is indeterminate — neither pass nor fail.
   double proximalNeckLengthUncertaintyMm = 0.0;
+  /// A copy whose four sizing diameters (the fields without "Lumen") are those on `reference`.
+  SizingAnatomy On(DiameterReference reference) const;
 };
 
 struct DeviceSelectionParams
@@ -126,7 +138,7 @@ struct DeviceSelection
   std::vector<std::string> reasons;
 };
 
-/// The sizing inputs from the measurement stage (MeasureAnatomy.h; lumen diameters): (a), (b),
+/// The sizing inputs from the measurement stage (MeasureAnatomy.h; outer and lumen diameters): (a), (b),
 /// neck length with its uncertainty (NeckLengthUncertaintyMm), β, α, (e), (f), access minimum
 /// diameters, site to bifurcation; each iliac's seal length is its common iliac length,
 /// bifurcation to internal iliac origin — the most a limb can seal in. A value the stage could

@@ -62,6 +62,23 @@ Json FamilyToJson(const FamilyEvaluation& e)
 
 } // namespace
 
+nlohmann::json CriterionCheckToJson(const CriterionCheck& check)
+{
+  return CheckToJson(check);
+}
+
+nlohmann::json NeckAssessmentToJson(const NeckAssessment& neck, const std::string& rulesOrigin)
+{
+  Json checks = Json::array();
+  for (const CriterionCheck& c : neck.checks)
+    checks.push_back(CheckToJson(c));
+  return { { "hostile", neck.hostile },
+           { "determinate", neck.determinate },
+           { "summary", neck.summary },
+           { "rules", rulesOrigin },
+           { "checks", checks } };
+}
+
 nlohmann::json DeviceSelectionToJson(const DeviceSelection& s)
 {
   Json families = Json::array();

@@ -23,11 +23,20 @@
 
 #include <nlohmann/json.hpp>
 
+#include "Device/HostileNeck.h"
 #include "Device/SelectDevice.h"
 
 namespace sgp
 {
 
 nlohmann::json DeviceSelectionToJson(const DeviceSelection& selection);
+
+/// One check: {"name", "status" (pass/fail/indeterminate), "value", "unit", "min", "max",
+/// "margin", "requirement", "text", "evidence"} (numbers null when NaN).
+nlohmann::json CriterionCheckToJson(const CriterionCheck& check);
+
+/// {"hostile", "determinate", "summary", "rules" (the rule set's origin), "checks": [one per rule,
+/// pass = not hostile]}.
+nlohmann::json NeckAssessmentToJson(const NeckAssessment& neck, const std::string& rulesOrigin);
 
 } // namespace sgp

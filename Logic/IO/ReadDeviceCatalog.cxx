@@ -247,10 +247,15 @@ DeviceFamily ReadFamily(const std::string& origin, const Json& families, size_t 
   DeviceFamily family;
   family.name = r.Text(json, "", "name", true);
   r.SetName(family.name);
-  r.OnlyKeys(json, "", { "name", "manufacturer", "source", "note", "mainBodies", "limbs", "ifu" });
+  r.OnlyKeys(json, "", { "name", "manufacturer", "source", "note", "diameterReference", "mainBodies", "limbs", "ifu" });
   family.manufacturer = r.Text(json, "", "manufacturer");
   family.source = r.Text(json, "", "source", true);
   family.note = r.Text(json, "", "note");
+  const std::string reference = r.Text(json, "", "diameterReference", true);
+  if (reference != "outerWall" && reference != "lumen")
+    r.Fail("diameterReference", "is \"" + reference + "\"",
+           "\"outerWall\" or \"lumen\" (the diameter its IFU ranges use)");
+  family.diameterReference = reference == "lumen" ? DiameterReference::Lumen : DiameterReference::OuterWall;
   family.mainBodies = ReadComponent(r, json, "mainBodies", true);
   family.limbs = ReadComponent(r, json, "limbs", false);
   family.ifu = ReadIfu(r, json);

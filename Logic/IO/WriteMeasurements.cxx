@@ -46,12 +46,12 @@ std::string FormatMeasurementsTable(const Measurements& measurements)
 std::string FormatMeasurementsTable(const std::vector<Measurement>& rows)
 {
   std::ostringstream out;
-  out << "name,value,unit,definition,vessel,abscissaMm,minDiameterMm,maxDiameterMm,areaDiameterMm\n";
+  out << "name,value,unit,definition,vessel,abscissaMm,minDiameterMm,maxDiameterMm,areaDiameterMm,wall,estimated\n";
   for (const Measurement& m : rows)
   {
     out << m.name << ',' << Number(m.value) << ',' << Quoted(m.unit) << ',' << Quoted(m.definition) << ',' << m.vessel
         << ',' << Number(m.abscissaMm) << ',' << Number(m.minMm) << ',' << Number(m.maxMm) << ',' << Number(m.areaMm)
-        << '\n';
+        << ',' << m.wall << ',' << (m.estimated ? "true" : "false") << '\n';
   }
   return out.str();
 }
@@ -96,9 +96,14 @@ nlohmann::json MeasurementsToJson(const Measurements& measurements)
   nlohmann::json values = nlohmann::json::array();
   for (const Measurement& m : measurements.values)
   {
-    nlohmann::json row = { { "name", m.name },     { "value", JsonNumber(m.value) },
-                           { "unit", m.unit },     { "definition", m.definition },
-                           { "vessel", m.vessel }, { "abscissaMm", JsonNumber(m.abscissaMm) } };
+    nlohmann::json row = { { "name", m.name },
+                           { "value", JsonNumber(m.value) },
+                           { "unit", m.unit },
+                           { "definition", m.definition },
+                           { "vessel", m.vessel },
+                           { "abscissaMm", JsonNumber(m.abscissaMm) },
+                           { "wall", m.wall.empty() ? nlohmann::json(nullptr) : nlohmann::json(m.wall) },
+                           { "estimated", m.estimated } };
     if (std::isfinite(m.minMm))
     {
       row["minDiameterMm"] = m.minMm;

@@ -3,8 +3,10 @@
 /// `<table>` output as a vtkMRMLTableNode) and the measurement part of the JSON report.
 ///
 /// Measurements table, one row per value (MeasureAnatomy.h), header
-///   `name,value,unit,definition,vessel,abscissaMm,minDiameterMm,maxDiameterMm,areaDiameterMm`
-/// — value empty when not measured, the diameter columns empty for non-diameters. Text fields are
+///   `name,value,unit,definition,vessel,abscissaMm,minDiameterMm,maxDiameterMm,areaDiameterMm,wall,estimated`
+/// — value empty when not measured, the diameter columns empty for non-diameters; `wall` outer,
+/// lumen or empty (neither applies); `estimated` true for an outer diameter at a level less than
+/// 60 % supported (MeasureOuterWall.h). Text fields are
 /// double-quoted (definitions contain commas). Numbers with up to 10 significant digits.
 /// Diameter profile table, one row per ring of the fitted surface, header
 ///   `vessel,abscissaMm,meanDiameterMm,minDiameterMm,maxDiameterMm,areaDiameterMm`

@@ -1,12 +1,15 @@
 #include "IO/WritePlanOutputs.h"
 
+#include <cmath>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
 #include "IO/DeviceSelectionToJson.h"
 #include "IO/WriteCenterlines.h"
+#include "IO/WriteImage.h"
 #include "IO/WriteMeasurements.h"
+#include "IO/WriteOuterWallModel.h"
 #include "IO/WriteReturnParameters.h"
 #include "IO/WriteStentModel.h"
 #include "IO/WriteTextFile.h"
@@ -27,15 +30,39 @@ nlohmann::json PlanReportJson(const RepairPlan& plan, const PlanRunInfo& run)
 {
   nlohmann::json report = MeasurementsToJson(plan.measurements);
   report["format"] = "StentGraftPlanner.report/1";
-  report["notes"] = { "Diameters are lumen diameters (wall to wall of the contrast-filled lumen); instructions for "
-                      "use give outer-wall diameters, so sizes are under-called where there is thrombus or a thick "
-                      "wall.",
+  report["notes"] = { "(a)-(f) are outer wall to outer wall, perpendicular to the centerline, as instructions for "
+                      "use and guidelines size; the lumen values are listed beside them. Each measurement's wall "
+                      "field says which it is; estimated marks an outer diameter where less than 60 % of the "
+                      "circumference showed a visible outer boundary.",
                       "Device figures come from the catalogue " + run.deviceCatalog +
                         ": public defaults, verify them against the current instructions for use." };
+  report["hostileNeck"] =
+    plan.neck.checks.empty() ? nlohmann::json(nullptr) : NeckAssessmentToJson(plan.neck, run.neckRules);
   report["device"] = DeviceSelectionToJson(plan.selection);
   report["device"]["simulated"] =
     plan.HasGraft() ? nlohmann::json(plan.selection.families[plan.simulatedFamily].family) : nlohmann::json(nullptr);
   report["fitCheck"] = plan.HasGraft() ? FitCheckToJson(plan.fitCheck) : nlohmann::json(nullptr);
+  const VesselWall& wall = plan.vesselWall;
+  nlohmann::json planes = nlohmann::json::object();
+  for (int v = 0; v < 3; ++v)
+  {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const OuterWallPlane& p : wall.vessels[v].planes)
+      rows.push_back({ p.abscissaMm, p.areaDiameterMm, p.minCaliperMm, p.maxCaliperMm, p.supportedFraction,
+                       p.thrombusMm.size() > 0 ? p.thrombusMm.maxCoeff() : 0.0,
+                       2.0 * std::sqrt(p.lumenAreaMm2 / 3.14159265358979323846), p.centreLps.x(), p.centreLps.y(),
+                       p.centreLps.z() });
+    planes[wall.names[v]] = rows;
+  }
+  report["outerWall"] = { { "method", "radial model: rays from the lumen centerline, half-maximum wall-to-fat edge, "
+                                      "robust circle where no fat plane shows (Macia et al. 2009)" },
+                          { "wallThicknessMm", wall.wallThicknessMm },
+                          { "wallThicknessMeasured", wall.wallThicknessEstimated },
+                          { "calciumHu", wall.calciumHu },
+                          { "planeColumns",
+                            { "abscissaMm", "areaDiameterMm", "minCaliperMm", "maxCaliperMm", "supportedFraction",
+                              "maxThrombusMm", "lumenAreaDiameterMm", "centreX", "centreY", "centreZ" } },
+                          { "planes", planes } };
   report["run"] = { { "inputVolume", run.inputVolume },
                     { "lumenVolumeMl", plan.lumen.volumeMl },
                     { "acmIterations", plan.fit.iterations },
@@ -51,7 +78,7 @@ PlanRequest PlanRequestFor(const PlanOutputPaths& paths)
   if (!paths.returnParameterFile.empty() || !paths.simulatedStentModel.empty() || !paths.report.empty() ||
       !paths.measurements.empty())
     request.through = PlanStage::Device;
-  else if (!paths.diameterProfile.empty())
+  else if (!paths.diameterProfile.empty() || !paths.wallLabelMap.empty() || !paths.outerWallModel.empty())
     request.through = PlanStage::Measurements;
   else if (!paths.stentModel.empty() || !paths.initialStentModel.empty())
     request.through = PlanStage::StentSurface;
@@ -61,6 +88,7 @@ PlanRequest PlanRequestFor(const PlanOutputPaths& paths)
     request.through = PlanStage::Segmentation;
   request.initialSurfaceValues = !paths.initialStentModel.empty();
   request.requireSimulatedGraft = !paths.simulatedStentModel.empty();
+  request.wallLabelMap = !paths.wallLabelMap.empty();
   return request;
 }
 
@@ -105,6 +133,19 @@ void WritePlanOutputs(const RepairPlan& plan,
                       { "Apposition", plan.fitCheck.appositionMm },
                       { "Sealing", plan.fitCheck.sealing.cast<double>() } },
                     outputs.Stage(paths.simulatedStentModel));
+  }
+  if (!paths.wallLabelMap.empty())
+  {
+    Require(plan, PlanStage::Measurements, "outputWallLabelMap");
+    if (!plan.wallLabels)
+      throw std::logic_error(
+        "WritePlanOutputs: outputWallLabelMap was asked for, but PlanRequest::wallLabelMap was not");
+    WriteLabelMap(*plan.wallLabels, outputs.Stage(paths.wallLabelMap));
+  }
+  if (!paths.outerWallModel.empty())
+  {
+    Require(plan, PlanStage::Measurements, "outputOuterWallModel");
+    WriteOuterWallModel(plan.vesselWall, outputs.Stage(paths.outerWallModel));
   }
   if (!paths.diameterProfile.empty())
   {

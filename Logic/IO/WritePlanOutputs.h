@@ -22,6 +22,8 @@ namespace sgp
 struct PlanOutputPaths
 {
   std::string labelMap;            ///< the lumen, on the input's grid
+  std::string wallLabelMap;        ///< lumen 1, thrombus and wall 2, calcium 3, on the input's grid
+  std::string outerWallModel;      ///< the traced outer wall, .vtp
   std::string centerlines;         ///< .vtp
   std::string landmarks;           ///< .mrk.json
   std::string stentModel;          ///< the fitted surface
@@ -38,11 +40,12 @@ struct PlanRunInfo
 {
   std::string inputVolume;
   std::string deviceCatalog; ///< the catalogue's path
+  std::string neckRules;     ///< the hostile-neck rules' path
 };
 
 /// The stages `paths` need: the whole plan for the return values (Slicer always asks for them,
 /// and its panel keeps stale values of any that is missing), the measurements table or the
-/// report; measurements for the diameter profile; the fitted surface for the stent models;
+/// report; measurements for the diameter profile and the wall outputs; the fitted surface for the stent models;
 /// centerlines for centerlines or landmarks; else the segmentation only.
 PlanRequest PlanRequestFor(const PlanOutputPaths& paths);
 

@@ -8,6 +8,7 @@
 #include "Centerlines/VesselOrigins.h"
 #include "Common/Format.h"
 #include "Common/Median.h"
+#include "Measurement/MeasureOuterWall.h"
 
 namespace sgp
 {
@@ -31,6 +32,7 @@ Measurement Diameter(const std::string& name,
                      const std::string& definition)
 {
   Measurement m{ name, ring.meanMm, "mm", definition, vessel, ring.abscissaMm };
+  m.wall = "lumen";
   m.minMm = ring.minMm;
   m.maxMm = ring.maxMm;
   m.areaMm = ring.areaMm;
@@ -56,6 +58,7 @@ struct MeasureContext
   const ProximalSite& site;
   const Centerline* iliac[2];
   const DiameterProfile& trunk;
+  const VesselWall* wall;          ///< the traced outer wall, or nullptr
   Point3 B;                        ///< the aortic bifurcation, LPS mm
   double sSite = nan, sBif = nan;  ///< along the aorta, mm
   double internalIliacAbscissa[2]; ///< along each iliac, mm (NaN: none found)
@@ -70,12 +73,12 @@ std::pair<RingDiameters, RingDiameters> MeasureNeckDiameters(const MeasureContex
       "The fitted trunk starts " + FormatNumber(trunk.rings.front().abscissaMm - c.sSite) +
       " mm below the proximal implantation site (proximalStartMm); (a) is read at its first ring.");
   const RingDiameters a = trunk.At(c.sSite);
-  out.values.push_back(Diameter("proximalNeckDiameter", a, "aorta",
+  out.values.push_back(Diameter("proximalNeckLumenDiameter", a, "aorta",
                                 "(a) mean ring diameter of the fitted surface at the proximal implantation site (" +
                                   std::string(ToString(c.site.source)) + "), lumen"));
   const RingDiameters b = trunk.At(c.sSite + secondDiameterDepthMm);
   out.values.push_back(
-    Diameter("neckDiameter15mm", b, "aorta",
+    Diameter("neckLumenDiameter15mm", b, "aorta",
              "(b) mean ring diameter 15 mm below the proximal site along the aortic centerline, lumen"));
   return { a, b };
 }
@@ -90,13 +93,13 @@ std::size_t MeasureSacDiameters(const MeasureContext& c, Measurements& out)
         trunk.rings[k].meanMm > trunk.rings[widest].meanMm)
       widest = k;
   out.values.push_back(
-    Diameter("maxAneurysmDiameter", trunk.rings[widest], "aorta",
+    Diameter("maxAneurysmLumenDiameter", trunk.rings[widest], "aorta",
              "(c) largest mean ring diameter between the proximal site and the aortic bifurcation, lumen"));
   std::size_t narrowest = widest;
   for (std::size_t k = widest; k < trunk.rings.size(); ++k)
     if (trunk.rings[k].meanMm < trunk.rings[narrowest].meanMm)
       narrowest = k;
-  out.values.push_back(Diameter("distalNeckMinDiameter", trunk.rings[narrowest], "aorta",
+  out.values.push_back(Diameter("distalNeckMinLumenDiameter", trunk.rings[narrowest], "aorta",
                                 "(d) smallest mean ring diameter between (c) and the trunk's last ring (3 stent radii "
                                 "above the flow divider), lumen"));
   return widest;
@@ -121,7 +124,7 @@ void MeasureIliacLandingZone(const MeasureContext& c, int side, Measurements& ou
         means.push_back(r.meanMm);
     }
   RingDiameters zone = leg.At(0.5 * (start + end));
-  const std::string name = std::string(Side(side)) + "IliacDiameter";
+  const std::string name = std::string(Side(side)) + "IliacLumenDiameter";
   std::string definition = std::string(side == 0 ? "(e)" : "(f)") +
                            " median mean ring diameter of the common iliac over the leg's distal 15 mm (landing "
                            "zone ending 5 mm above the internal iliac origin), lumen";
@@ -181,10 +184,18 @@ double FindNeckEnd(const MeasureContext& c, const RingDiameters& a, std::size_t 
 void MeasureLengths(const MeasureContext& c, double sNeckEnd, double iliacOffset[2], Measurements& out)
 {
   std::vector<Measurement>& v = out.values;
-  v.push_back(
-    { "proximalNeckLength", sNeckEnd - c.sSite, "mm",
-      "proximal site to where the ring's smallest diameter first exceeds (a) by 10 %, along the aortic centerline",
-      "aorta", c.sSite });
+  const bool outer = std::isfinite(out.outerNeckEndMm);
+  Measurement neck{ "proximalNeckLength",
+                    sNeckEnd - c.sSite,
+                    "mm",
+                    outer ? "proximal site to where the outer wall's smallest width first exceeds (a) by 10 %, along "
+                            "the aortic centerline"
+                          : "proximal site to where the ring's smallest diameter first exceeds the lumen's (a) by "
+                            "10 %, along the aortic centerline",
+                    "aorta",
+                    c.sSite };
+  neck.wall = outer ? "outer" : "lumen";
+  v.push_back(neck);
   v.push_back({ "proximalSiteToBifurcationLength", c.sBif - c.sSite, "mm",
                 "proximal site to the aortic bifurcation (where the aortic and common iliac axes meet), along the "
                 "aortic centerline",
@@ -214,10 +225,13 @@ void MeasureNeckAngles(const MeasureContext& c,
   const double sSite = c.sSite;
   const double neckAxisLength =
     std::max(5.0, std::min(secondDiameterDepthMm, std::isfinite(sNeckEnd) ? sNeckEnd - sSite : secondDiameterDepthMm));
-  const Eigen::Vector3d neckAxis = PositionAt(aorta, sSite + neckAxisLength) - PositionAt(aorta, sSite);
+  // On the outer wall's centroids where it was traced (an eccentric thrombus moves the lumen's
+  // centerline off the vessel's axis), else on the centerline.
+  const auto axis = [&](double s) { return OuterAxisPoint(c.wall, aorta, s); };
+  const Eigen::Vector3d neckAxis = axis(sSite + neckAxisLength) - axis(sSite);
   double beta = nan;
-  if (std::isfinite(sNeckEnd) && (c.B - PositionAt(aorta, sNeckEnd)).norm() > 10.0)
-    beta = AngleDeg(neckAxis, c.B - PositionAt(aorta, sNeckEnd));
+  if (std::isfinite(sNeckEnd) && (c.B - axis(sNeckEnd)).norm() > 10.0)
+    beta = AngleDeg(neckAxis, c.B - axis(sNeckEnd));
   out.values.push_back({ "neckAngleBeta", beta, "deg",
                          "infrarenal angulation: neck axis (chord over the first " + FormatNumber(neckAxisLength) +
                            " mm below the site) against the aneurysm axis (chord from the neck's end to the "
@@ -226,7 +240,7 @@ void MeasureNeckAngles(const MeasureContext& c,
   const double suprarenalLength = std::min(30.0, sSite);
   double alpha = nan;
   if (suprarenalLength >= 10.0)
-    alpha = AngleDeg(PositionAt(aorta, sSite) - PositionAt(aorta, sSite - suprarenalLength), neckAxis);
+    alpha = AngleDeg(axis(sSite) - axis(sSite - suprarenalLength), neckAxis);
   else
     out.warnings.push_back("The scan covers " + FormatNumber(sSite) +
                            " mm of aorta above the proximal site (at least 10 mm needed); neckAngleAlpha is not "
@@ -235,10 +249,17 @@ void MeasureNeckAngles(const MeasureContext& c,
                          "suprarenal angulation: suprarenal axis (chord over " + FormatNumber(suprarenalLength) +
                            " mm above the site) against the neck axis",
                          "aorta", sSite - suprarenalLength });
-  out.values.push_back(
-    { "neckConicity", 100.0 * (b.meanMm - a.meanMm) / a.meanMm, "%",
-      "(b − a) / a over the first 15 mm of the neck; positive: the neck widens downward (reverse taper)", "aorta",
-      sSite });
+  const double aOuter = out.Value("proximalNeckDiameter"), bOuter = out.Value("neckDiameter15mm");
+  const bool outer = std::isfinite(aOuter) && std::isfinite(bOuter);
+  Measurement conicity{ "neckConicity",
+                        outer ? 100.0 * (bOuter - aOuter) / aOuter : 100.0 * (b.meanMm - a.meanMm) / a.meanMm,
+                        "%",
+                        "(b − a) / a over the first 15 mm of the neck; positive: the neck widens downward (reverse "
+                        "taper)",
+                        "aorta",
+                        sSite };
+  conicity.wall = outer ? "outer" : "lumen";
+  out.values.push_back(conicity);
 }
 
 /// Each iliac's tortuosity, then each external iliac's smallest inscribed diameter (access).
@@ -271,6 +292,7 @@ void MeasureIliacAccess(const MeasureContext& c, const double iliacOffset[2], Me
                            "origin to 10 mm before the centerline's end in the scan (the delivery system's path), "
                            "lumen",
                            iliac.name, where });
+    out.values.back().wall = "lumen";
   }
 }
 
@@ -293,7 +315,8 @@ double Measurements::Value(const std::string& name) const
 Measurements MeasureAnatomy(const CenterlineTree& tree,
                             const StentMesh& mesh,
                             const Points& V,
-                            const ProximalSite& site)
+                            const ProximalSite& site,
+                            const VesselWall* wall)
 {
   Measurements out;
   out.site = site;
@@ -307,6 +330,7 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
                     site,
                     { &tree.rightIliac, &tree.leftIliac },
                     out.profiles[TrunkSegment],
+                    wall,
                     bifurcation.lps,
                     site.abscissaMm,
                     bifurcation.abscissaMm,
@@ -321,7 +345,23 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
   for (int side = 0; side < 2; ++side)
     MeasureIliacLandingZone(c, side, out);
   WarnDistortedAorticRings(out);
-  const double sNeckEnd = FindNeckEnd(c, a, widest, out);
+  if (wall)
+  {
+    OuterWallLevels levels{ c.sSite, c.sBif, c.trunk.rings.back().abscissaMm, {}, {} };
+    for (int side = 0; side < 2; ++side)
+    {
+      levels.landingToMm[side] = out.profiles[1 + side].rings.back().abscissaMm;
+      levels.landingFromMm[side] = levels.landingToMm[side] - landingZoneMm;
+    }
+    MeasureOuterWall(*wall, levels, out);
+  }
+  else
+    out.warnings.push_back("The outer wall was not traced: the outer-wall diameters (a)-(f) and the thrombus values "
+                           "are not measured.");
+  // The neck's end on the outer wall where it was found (the IFU's and the truth's definition),
+  // else on the lumen's rings.
+  const double sLumenNeckEnd = FindNeckEnd(c, a, widest, out);
+  const double sNeckEnd = std::isfinite(out.outerNeckEndMm) ? out.outerNeckEndMm : sLumenNeckEnd;
   double iliacOffset[2];
   MeasureLengths(c, sNeckEnd, iliacOffset, out);
   MeasureNeckAngles(c, sNeckEnd, a, b, out);

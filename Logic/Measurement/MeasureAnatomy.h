@@ -9,19 +9,25 @@
 ///    skeleton's junctions lie (inside the merged cross-section, distal to the branching point).
 ///    Lengths to B are along the aortic centerline, extended straight past its end where B lies
 ///    beyond it.
-///  - diameters are the **mean ring diameter** (MeasureDiameters.h) with min, max and
-///    area-equivalent beside it, lumen wall to lumen wall (not outer wall: thrombus and wall are
-///    not segmented);
-///  - (a) `proximalNeckDiameter` at the proximal site; (b) `neckDiameter15mm` 15 mm below it;
-///    (c) `maxAneurysmDiameter` the largest between the site and B; (d) `distalNeckMinDiameter` the
-///    smallest between (c)'s ring and the trunk's last ring (3 stent radii above the junction, away
-///    from the flow divider); (e)/(f) `rightIliacDiameter`/`leftIliacDiameter` the median over the
-///    leg's rings in its distal 15 mm (the distal landing zone, ending 5 mm above the internal
-///    iliac origin), leaving out distorted rings (smallest diameter under half the mean: the fit
-///    folded there, as in a tortuous iliac) — with fewer than two left, the median
-///    inscribed-sphere diameter of the centerline there, and a warning; a distorted ring under
-///    (a)–(d) gives a warning;
-///  - `proximalNeckLength`: site to where the aorta first exceeds (a) by 10 % (linear between
+///  - the **lumen** diameters are the **mean ring diameter** (MeasureDiameters.h) with min, max
+///    and area-equivalent beside it, lumen wall to lumen wall: (a) `proximalNeckLumenDiameter` at
+///    the proximal site; (b) `neckLumenDiameter15mm` 15 mm below it; (c)
+///    `maxAneurysmLumenDiameter` the largest between the site and B; (d)
+///    `distalNeckMinLumenDiameter` the smallest between (c)'s ring and the trunk's last ring (3
+///    stent radii above the junction, away from the flow divider); (e)/(f)
+///    `rightIliacLumenDiameter`/`leftIliacLumenDiameter` the median over the leg's rings in its
+///    distal 15 mm (the distal landing zone, ending 5 mm above the internal iliac origin), leaving
+///    out distorted rings (smallest diameter under half the mean: the fit folded there, as in a
+///    tortuous iliac) — with fewer than two left, the median inscribed-sphere diameter of the
+///    centerline there, and a warning; a distorted ring under (a)–(d) gives a warning;
+///  - the **outer-wall** (a)–(f) under the names without "Lumen" (`proximalNeckDiameter` …
+///    `leftIliacDiameter`) and the thrombus, sac and calcium values, at the same levels, from the
+///    traced VesselWall (MeasureOuterWall.h); without one they are absent (not measured) and a
+///    warning says so. Each Measurement's `wall` says which wall it measures;
+///  - `proximalNeckLength`, `neckConicity` and the angles use the outer wall where it was traced
+///    (the neck's end on the outer wall, (a) and (b) outer, the outer contours' centroids as the
+///    axis points), else the lumen;
+///  - `proximalNeckLength` on the lumen: site to where the aorta first exceeds (a) by 10 % (linear between
 ///    rings), the usual clinical rule — judged on each ring's smallest diameter, the minor axis
 ///    clinicians use in angulated necks, because a ring that cuts a bend obliquely has a larger
 ///    mean before the aorta widens; `proximalSiteToBifurcationLength`: site to
@@ -52,6 +58,7 @@
 #include "Centerlines/ProximalSite.h"
 #include "Measurement/MeasureDiameters.h"
 #include "Stent/StentMesh.h"
+#include "Wall/VesselWall.h"
 
 namespace sgp
 {
@@ -76,6 +83,8 @@ struct Measurement
   double minMm = std::numeric_limits<double>::quiet_NaN(); ///< diameters: the ring's smallest diameter
   double maxMm = std::numeric_limits<double>::quiet_NaN(); ///< diameters: the ring's largest diameter
   double areaMm = std::numeric_limits<double>::quiet_NaN(); ///< diameters: area-equivalent diameter
+  std::string wall = {};  ///< which wall it measures: "outer", "lumen", or "" (neither applies)
+  bool estimated = false; ///< an outer diameter at a level less than 60 % supported (MeasureOuterWall.h)
 };
 
 struct Measurements
@@ -90,6 +99,11 @@ struct Measurements
   std::vector<Measurement> values; ///< in the order of the file comment
   std::array<DiameterProfile, 3> profiles;
   std::vector<std::string> warnings;
+  /// The neck's end on the outer wall (MeasureOuterWall.h), mm along the aorta; NaN: not found.
+  double outerNeckEndMm = std::numeric_limits<double>::quiet_NaN();
+  /// Outer diameter 10 and 15 mm below the site minus (a), mm (positive: widening); NaN: unknown.
+  std::array<double, 2> reverseTaperMm{ std::numeric_limits<double>::quiet_NaN(),
+                                        std::numeric_limits<double>::quiet_NaN() };
   /// The measurement called `name`, or nullptr.
   const Measurement* Find(const std::string& name) const;
   /// Its value, NaN when absent or not measured.
@@ -100,6 +114,7 @@ struct Measurements
 Measurements MeasureAnatomy(const CenterlineTree& tree,
                             const StentMesh& mesh,
                             const Points& V,
-                            const ProximalSite& site);
+                            const ProximalSite& site,
+                            const VesselWall* wall = nullptr);
 
 } // namespace sgp

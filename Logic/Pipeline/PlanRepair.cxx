@@ -1,5 +1,6 @@
 #include "Pipeline/PlanRepair.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "Centerlines/AssignInscribedRadii.h"
@@ -103,33 +104,68 @@ WallDistanceField FitStentSurface(const PlanRequest& request,
   return wall;
 }
 
+/// The outer wall, thrombus and calcium of the aorta and both common iliacs, from the CT crop.
+void TraceWall(const CtImage& ct,
+               const PlanRequest& request,
+               const PlanParams& params,
+               const StageReporter& report,
+               RepairPlan& plan)
+{
+  report.Begin("SegmentOuterWall", "Tracing the outer wall, the thrombus and the calcium");
+  VesselWallParams wallParams = params.wall;
+  // Nothing outside the lumen above its window is blood (VesselWall.h).
+  wallParams.calciumHu = std::min(plan.lumen.calciumHu, params.wall.calciumHu);
+  plan.vesselWall = TraceVesselWall(ct, *plan.lumen.mask, plan.centerlines, plan.site.abscissaMm, wallParams);
+  if (plan.vesselWall.Empty())
+    report.Warn("No outer wall was found around the lumen (no fat outside the vessel in any plane?): the "
+                "outer-wall diameters, the thrombus values and the sizing on them are not measured.");
+  else if (!plan.vesselWall.wallThicknessEstimated && params.wall.wallThicknessMm < 0.0)
+    report.Warn("The wall thickness could not be measured above the neck; the thrombus is measured with a wall of " +
+                FormatNumber(plan.vesselWall.wallThicknessMm) + " mm.");
+  report.Progress(0.8);
+  if (request.wallLabelMap)
+    plan.wallLabels = WallLabelMap(plan.vesselWall, *plan.lumen.mask, ct);
+}
+
 void Measure(const WallDistanceField& wall, const PlanParams& params, const StageReporter& report, RepairPlan& plan)
 {
   report.Begin("MeasureAnatomy", "Measuring diameters, lengths and angles");
   // Measurements are always read off a measure-mode fit (paper, section 2.2).
   const Points measureV = plan.fitInMeasureMode ? plan.fit.V : FitActiveContour(plan.mesh, wall, params.measure).V;
-  plan.measurements = MeasureAnatomy(plan.centerlines, plan.mesh, measureV, plan.site);
+  plan.measurements = MeasureAnatomy(plan.centerlines, plan.mesh, measureV, plan.site, &plan.vesselWall);
   for (const std::string& w : plan.measurements.warnings)
     if (w != plan.site.warning) // reported with the stent surface already
       report.Warn(w);
   plan.rows = plan.measurements.values;
+  if (!params.neckRules.rules.empty())
+  {
+    plan.neck = AssessNeck(NeckFromMeasurements(plan.measurements), params.neckRules);
+    if (!plan.neck.determinate && !plan.neck.hostile)
+      report.Warn("Hostile neck not determined: " + plan.neck.summary + ".");
+  }
 }
 
-/// The simulated device's sizes as table rows.
-void AddDeviceRows(RepairPlan& plan)
+/// The simulated device's sizes as table rows, on the wall its IFU names.
+void AddDeviceRows(const DeviceCatalog& catalog, RepairPlan& plan)
 {
   const FamilyEvaluation& family = plan.selection.families[plan.simulatedFamily];
+  const bool outer =
+    catalog.families[std::size_t(family.catalogIndex)].diameterReference == DiameterReference::OuterWall;
+  const std::string wall = outer ? "outer" : "lumen";
+  const std::string over = outer ? " % over the outer-wall " : " % over the lumen's ";
   const std::string name = family.family + (plan.selection.recommended == plan.simulatedFamily ? "" : " (outside IFU)");
   const StentMesh& mesh = plan.mesh;
   plan.rows.push_back({ "mainBodyDiameter", family.mainBody.diameterMm, "mm",
-                        name + " main body, " + FormatNumber(family.mainBody.oversizingPercent) + " % over (a)",
-                        "aorta", plan.measurements.site.abscissaMm });
+                        name + " main body, " + FormatNumber(family.mainBody.oversizingPercent) + over + "(a)", "aorta",
+                        plan.measurements.site.abscissaMm });
   plan.rows.push_back({ "rightLimbDiameter", family.rightLimb.diameterMm, "mm",
-                        name + " right limb, " + FormatNumber(family.rightLimb.oversizingPercent) + " % over (e)",
+                        name + " right limb, " + FormatNumber(family.rightLimb.oversizingPercent) + over + "(e)",
                         "rightIliac", mesh.ringAbscissaMm[RightLegSegment].back() });
   plan.rows.push_back({ "leftLimbDiameter", family.leftLimb.diameterMm, "mm",
-                        name + " left limb, " + FormatNumber(family.leftLimb.oversizingPercent) + " % over (f)",
+                        name + " left limb, " + FormatNumber(family.leftLimb.oversizingPercent) + over + "(f)",
                         "leftIliac", mesh.ringAbscissaMm[LeftLegSegment].back() });
+  for (std::size_t i = plan.rows.size() - 3; i < plan.rows.size(); ++i)
+    plan.rows[i].wall = wall;
   for (const Measurement& m : FitCheckRows(plan.fitCheck, mesh))
     plan.rows.push_back(m);
 }
@@ -162,14 +198,29 @@ void ChooseAndSimulateDevice(const WallDistanceField& wall,
     graftParams.balloonRadiusMm[s] = plan.graftDiametersMm[s] / 2.0;
   plan.graft = FitActiveContour(plan.mesh, wall, graftParams, report.Callback());
   plan.fitCheck = CheckGraftFit(plan.mesh, plan.graft.V, plan.graft.wallDistanceMm, plan.measurements, plan.centerlines,
-                                plan.graftDiametersMm);
+                                plan.graftDiametersMm, FitCheckParams{}, &plan.vesselWall);
   if (plan.selection.recommended < 0)
     report.Warn("No device is within its instructions for use; the graft simulated is the nearest, " + family.family +
                 " (outside its IFU).");
-  AddDeviceRows(plan);
+  AddDeviceRows(params.catalog, plan);
 }
 
 } // namespace
+
+NeckAnatomy NeckFromMeasurements(const Measurements& m)
+{
+  NeckAnatomy neck;
+  neck.neckLengthMm = m.Value("proximalNeckLength");
+  neck.neckDiameterMm = m.Value("proximalNeckDiameter");
+  neck.neckAngleBetaDeg = m.Value("neckAngleBeta");
+  neck.neckAngleAlphaDeg = m.Value("neckAngleAlpha");
+  neck.neckThrombusArcPercent = m.Value("neckThrombusArc");
+  neck.neckCalcificationArcPercent = m.Value("neckCalcificationArc");
+  neck.reverseTaper10mmMm = m.reverseTaperMm[0];
+  neck.reverseTaper15mmMm = m.reverseTaperMm[1];
+  neck.neckLengthUncertaintyMm = NeckLengthUncertaintyMm;
+  return neck;
+}
 
 int FamilyToSimulate(const DeviceSelection& selection)
 {
@@ -196,7 +247,12 @@ RepairPlan PlanRepair(CtImage::ConstPointer ct,
   RepairPlan plan;
   const StageReporter report(observer, plan);
   SegmentLumen(*ct, seedLps, params, report, plan);
-  ct = nullptr; // nothing after segmentation reads HU: free the input if the caller handed it over
+  // Only the wall stage reads HU after segmentation, and only within its rays' reach of the lumen:
+  // keep that crop and free the input if the caller handed it over.
+  CtImage::Pointer around = request.through >= PlanStage::Measurements
+                              ? CropAroundLumen(*ct, *plan.lumen.mask, params.wall.outer.maxRadiusMm)
+                              : nullptr;
+  ct = nullptr;
   plan.reached = PlanStage::Segmentation;
   if (request.through < PlanStage::Centerlines)
     return plan;
@@ -211,6 +267,8 @@ RepairPlan PlanRepair(CtImage::ConstPointer ct,
   if (request.through < PlanStage::Measurements)
     return plan;
 
+  TraceWall(*around, request, params, report, plan);
+  around = nullptr;
   Measure(wall, params, report, plan);
   plan.reached = PlanStage::Measurements;
   if (request.through < PlanStage::Device)

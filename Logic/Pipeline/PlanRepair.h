@@ -5,17 +5,23 @@
 ///   CT ──► GrowLumenRegion ──► ThinLabelMap ──► BuildSkeletonGraph ──► LabelAortoIliacTree
 ///      ──► AssignInscribedRadii ──► FindProximalSite ──► BuildStentMesh ──► WallDistanceField
 ///      ──► FitActiveContour (acmMode) [──► FitActiveContour (measure) when acmMode is simulate]
+///      ──► TraceVesselWall (outer wall, thrombus, calcium) [──► WallLabelMap when asked]
 ///      ──► MeasureAnatomy ──► SelectDevice ──► FitActiveContour (simulate, the device's radii)
 ///      ──► CheckGraftFit
 ///
 /// `PlanRequest::through` says how far to go; each stage needs those before it. Stage names (the
 /// `name` passed to PlanObserver::begin, in this order): SegmentLumen, ThinLumen,
-/// ExtractCenterlines, FitStent, MeasureAnatomy, SelectDevice, SimulateGraft (the last only when a
-/// family has all three sizes).
+/// ExtractCenterlines, FitStent, SegmentOuterWall, MeasureAnatomy, SelectDevice, SimulateGraft (the
+/// last only when a family has all three sizes).
+///
+/// The simulated graft expands against the lumen (it presses on the thrombus, not through it);
+/// sizing uses the diameters each family's IFU names (outer wall for the shipped catalogue).
 ///
 /// Memory: the CT is taken by pointer and this function drops its reference once the lumen is
-/// segmented (nothing after segmentation reads HU), so a caller that hands over its only
-/// reference (std::move) frees the full-resolution input before thinning starts.
+/// segmented, keeping (when the plan goes on to the measurements) only a crop around the lumen,
+/// grown by the outer-wall rays' reach, for the wall stage; the crop goes once the wall is traced.
+/// So a caller that hands over its only reference (std::move) frees the full-resolution input
+/// before thinning starts.
 ///
 /// Frames and units: every point LPS mm, diameters and lengths mm, angles degrees.
 /// Errors: InputError and AlgorithmError from the stages (their messages name the value seen and
@@ -37,11 +43,13 @@
 #include "Common/Types.h"
 #include "Device/DeviceCatalog.h"
 #include "Device/FitCheck.h"
+#include "Device/HostileNeck.h"
 #include "Device/SelectDevice.h"
 #include "Measurement/MeasureAnatomy.h"
 #include "Segmentation/GrowLumenRegion.h"
 #include "Stent/ActiveContour.h"
 #include "Stent/StentMesh.h"
+#include "Wall/VesselWall.h"
 
 namespace sgp
 {
@@ -66,6 +74,9 @@ struct PlanRequest
   bool requireSimulatedGraft = false;
   /// The user's lowest renal ostium (LPS mm); empty: found from the renal branches.
   std::optional<Point3> lowestRenalOstiumLps;
+  /// The wall label map (WallLabelMap: lumen, thrombus and wall, calcium), when the plan reaches
+  /// the measurements.
+  bool wallLabelMap = false;
 };
 
 /// Every stage's parameters; defaults equal the XML defaults of StentGraftSimulation.
@@ -76,6 +87,8 @@ struct PlanParams
   CenterlineParams centerlines;
   /// proximalAbscissaMm < 0: the trunk starts at the proximal site found by FindProximalSite.
   StentMeshParams mesh;
+  /// The outer wall; its calcium threshold is set from the lumen's window (VesselWall.h).
+  VesselWallParams wall;
   /// The measure-mode fit the measurements are read off (paper, section 2.2).
   ActiveContourParams measure = ActiveContourParams::Measure();
   /// Set (acmMode simulate): the stent surface is fitted with these instead, and the measurements
@@ -87,6 +100,8 @@ struct PlanParams
   DeviceSelectionParams selection;
   /// The device catalogue (read and validated at the edge); needed when the plan reaches Device.
   DeviceCatalog catalog;
+  /// The hostile-neck rules (read and validated at the edge); empty: the neck is not assessed.
+  NeckRuleSet neckRules;
 };
 
 /// Stage boundaries, progress within a stage, and warnings as they arise. Each is optional.
@@ -115,7 +130,10 @@ struct RepairPlan
   ActiveContourResult fit;               ///< the stent surface, fitted in acmMode
   bool fitInMeasureMode = true;
 
+  VesselWall vesselWall;          ///< when the plan reaches the measurements
+  LabelImage::Pointer wallLabels; ///< on the input's grid, when PlanRequest::wallLabelMap
   Measurements measurements;
+  NeckAssessment neck; ///< the hostile-neck rules on the measurements (empty without rules)
 
   DeviceSelection selection;
   int simulatedFamily = -1;                                ///< index into selection.families; −1: no graft simulated
@@ -138,6 +156,10 @@ RepairPlan PlanRepair(CtImage::ConstPointer ct,
                       const PlanRequest& request,
                       const PlanParams& params,
                       const PlanObserver& observer = {});
+
+/// The hostile-neck quantities from the measurements: neck length (with NeckLengthUncertaintyMm),
+/// outer (a), β, α, the neck's thrombus and calcification arcs, the reverse taper over 10 and 15 mm.
+NeckAnatomy NeckFromMeasurements(const Measurements& measurements);
 
 /// The family to simulate: the recommended one, else the one with all three sizes chosen and the
 /// fewest failing checks (so that a plan outside every IFU still shows how the nearest graft

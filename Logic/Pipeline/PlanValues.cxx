@@ -45,6 +45,12 @@ const std::vector<std::string>& ReturnValueNames()
     "distalNeckMinDiameter",
     "rightIliacDiameter",
     "leftIliacDiameter",
+    "proximalNeckLumenDiameter",
+    "neckLumenDiameter15mm",
+    "maxAneurysmLumenDiameter",
+    "distalNeckMinLumenDiameter",
+    "rightIliacLumenDiameter",
+    "leftIliacLumenDiameter",
     "proximalNeckLength",
     "proximalSiteToBifurcationLength",
     "rightIliacLength",
@@ -56,6 +62,12 @@ const std::vector<std::string>& ReturnValueNames()
     "leftIliacTortuosity",
     "rightAccessMinDiameter",
     "leftAccessMinDiameter",
+    "thrombusVolume",
+    "sacVolume",
+    "maxThrombusThickness",
+    "neckThrombusArc",
+    "neckCalcificationArc",
+    "hostileNeck",
     "proximalSiteSource",
     "recommendedDevice",
     "mainBodyDiameter",
@@ -92,6 +104,9 @@ std::vector<PlanValue> PlanReturnValues(const RepairPlan& plan)
     put(Number(m.name, m.value));
   const bool measured = plan.Reached(PlanStage::Measurements);
   put(Text("proximalSiteSource", ToString(plan.measurements.site.source), measured));
+  // Decided: a rule fails, or every rule was decided; an undecided neck is not measured.
+  put(Boolean("hostileNeck", plan.neck.hostile,
+              measured && !plan.neck.checks.empty() && (plan.neck.hostile || plan.neck.determinate)));
   const bool selected = plan.Reached(PlanStage::Device);
   const DeviceSelection& selection = plan.selection;
   put(Text("recommendedDevice", selection.recommended >= 0 ? selection.families[selection.recommended].family : "none",

@@ -158,6 +158,9 @@ SeedStatistics EstimateWindow(const CtImage& ct,
                        FormatNumber(params.upperHu, 0) + " HU; widen the window or use thresholdMode auto.");
     }
   }
+  // Calcium and bone: half the window's width above it (Auto: m + 3.5 h, ~10 σ above the lumen,
+  // so noise never reaches it; arterial-phase plaque reads 600–1200 HU, vessel-wall.md §2).
+  result.calciumHu = result.upperHu + 0.25 * (result.upperHu - result.lowerHu);
   return stats;
 }
 
@@ -196,16 +199,26 @@ VoxelBits GrowFromSeed(const CtImage& ct,
     throw std::logic_error("GrowLumenRegion: no seed-neighbourhood voxel in the window");
   }
   const short lower = ClampToShort(std::ceil(result.lowerHu)), upper = ClampToShort(std::floor(result.upperHu));
+  const short calcium = ClampToShort(std::floor(result.calciumHu));
   const auto size = ct.GetLargestPossibleRegion().GetSize();
   const long nx = long(size[0]), ny = long(size[1]), nz = long(size[2]), slice = nx * ny;
   const short* hu = ct.GetBufferPointer();
+  // Beside calcium or bone (a face neighbour above calciumHu) lies its blurred rim, whose HU
+  // passes through the lumen's window: not grown into (file comment, step 2).
+  const auto besideCalcium = [&](long flat, long i, long j, long k)
+  {
+    return (i > 0 && hu[flat - 1] > calcium) || (i + 1 < nx && hu[flat + 1] > calcium) ||
+           (j > 0 && hu[flat - nx] > calcium) || (j + 1 < ny && hu[flat + nx] > calcium) ||
+           (k > 0 && hu[flat - slice] > calcium) || (k + 1 < nz && hu[flat + slice] > calcium);
+  };
   VoxelBits inRegion(slice * nz);
   std::array<long, 3> lo{ nx, ny, nz }, hi{ -1, -1, -1 };
   std::vector<long> stack{ (*start)[0] + nx * ((*start)[1] + ny * (*start)[2]) };
   inRegion.Set(stack.back());
   const auto visit = [&](long flat)
   {
-    if (!inRegion.Test(flat) && hu[flat] >= lower && hu[flat] <= upper)
+    if (!inRegion.Test(flat) && hu[flat] >= lower && hu[flat] <= upper &&
+        !besideCalcium(flat, flat % nx, (flat / nx) % ny, flat / slice))
     {
       inRegion.Set(flat);
       stack.push_back(flat);
@@ -399,10 +412,30 @@ void RefineBoundary(MaskGrid& lumen,
 {
   result.edgeHu = 0.5 * (stats.medianHu + result.tissueHu);
   std::vector<bool> accept(static_cast<std::size_t>(lumen.Count()));
+  const long nx = lumen.size[0], ny = lumen.size[1], nz = lumen.size[2], slice = nx * ny;
   for (long flat = 0; flat < lumen.Count(); ++flat)
   {
     accept[flat] = hu[flat] >= result.edgeHu && hu[flat] <= result.upperHu;
   }
+  // Not into a calcium's or bone's blurred rim either (as GrowFromSeed).
+  for (long flat = 0; flat < lumen.Count(); ++flat)
+    if (hu[flat] > result.calciumHu)
+    {
+      const long i = flat % nx, j = (flat / nx) % ny, k = flat / slice;
+      accept[flat] = false;
+      if (i > 0)
+        accept[flat - 1] = false;
+      if (i + 1 < nx)
+        accept[flat + 1] = false;
+      if (j > 0)
+        accept[flat - nx] = false;
+      if (j + 1 < ny)
+        accept[flat + nx] = false;
+      if (k > 0)
+        accept[flat - slice] = false;
+      if (k + 1 < nz)
+        accept[flat + slice] = false;
+    }
   GrowConstrained(lumen, accept, refineSteps);
   // Noise leaves single-voxel pits in the boundary (a voxel just inside the wall drawn below the
   // edge level); the inscribed-sphere radius of the centerlines is the distance to the nearest of

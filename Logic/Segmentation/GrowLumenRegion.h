@@ -11,8 +11,11 @@
 ///     brighter contrast, then calcium and cortical bone (> 700 HU); below it lie enhancing
 ///     kidney parenchyma (150–200 HU) and cancellous bone (200–300 HU).
 ///  2. **Region growing** from the seed: the face-connected (6-neighbour) region of voxels in the
-///     window — what ITK's ConnectedThresholdImageFilter grows with face connectivity, written
-///     here with one bit per voxel for its marks (ITK's filter holds a full-size output and a
+///     window that have no face neighbour above `calciumHu` (upper + half the window's width:
+///     calcium or bone; the blurred rim of a plaque against the lumen passes through the window
+///     and would otherwise carry the region around the plaque, which hole filling then swallows —
+///     a shell the thinning turns into false branches) — what ITK's ConnectedThresholdImageFilter grows with face
+///     connectivity, written here with one bit per voxel for its marks (ITK's filter holds a full-size output and a
 ///     full-size scratch image beside the CT).
 ///  3. **Leak cutting.** A morphological opening with a ball of `leakOpeningRadiusMm`, keeping the
 ///     seed's component, cuts what is joined to the lumen only through thin bridges (partial-volume
@@ -27,8 +30,8 @@
 ///     bowel, marrow): AlgorithmError. So does a lumen over `maximumLumenVolumeMl`.
 ///  5. **Boundary refinement.** The boundary is moved to the half-maximum between lumen (m) and the
 ///     surrounding tissue (median HU `tissueDepthMm` outside the region, beyond the blur of the edge): neighbours
-///     within `refineDistanceMm` with HU in [edge, upper] are added; this undoes the conservative lower threshold
-///     without reaching into darker tissue.
+///     within `refineDistanceMm` with HU in [edge, upper], not beside calcium, are added; this undoes the conservative
+///     lower threshold without reaching into darker tissue.
 ///  6. **Pits and holes:** single background voxels with five or six lumen faces (noise pits in the
 ///     boundary) and background cavities not connected to the outside become lumen.
 ///
@@ -91,11 +94,13 @@ void ValidateRegionGrowingParams(const RegionGrowingParams& params);
 
 struct LumenSegmentation
 {
-  LabelImage::Pointer mask;          ///< on the grid of the input, 1 = lumen
-  double volumeMl = 0.0;             ///< lumen volume, mL
-  double lowerHu = 0.0;              ///< window used, HU
-  double upperHu = 0.0;              ///< window used, HU
-  double edgeHu = 0.0;               ///< half-maximum boundary level used, HU
+  LabelImage::Pointer mask; ///< on the grid of the input, 1 = lumen
+  double volumeMl = 0.0;    ///< lumen volume, mL
+  double lowerHu = 0.0;     ///< window used, HU
+  double upperHu = 0.0;     ///< window used, HU
+  double edgeHu = 0.0;      ///< half-maximum boundary level used, HU
+  /// Above it: calcium or bone, whose blurred rim is not lumen (upper + half the window's width).
+  double calciumHu = 0.0;
   double seedMedianHu = 0.0;         ///< median HU around the seed
   double seedSigmaHu = 0.0;          ///< robust standard deviation around the seed, HU
   double tissueHu = 0.0;             ///< median HU just outside the region

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include <tuple>
 
 #include <Eigen/Dense>
 
@@ -22,7 +25,8 @@ class HuSampler
 public:
   explicit HuSampler(const CtImage& ct)
     : m_Ct(ct)
-    , m_Size(ct.GetLargestPossibleRegion().GetSize())
+    , m_Size(ct.GetBufferedRegion().GetSize())
+    , m_Start(ct.GetBufferedRegion().GetIndex())
   {
   }
   double operator()(const Point3& lps) const
@@ -36,7 +40,7 @@ public:
     double t[3];
     for (int a = 0; a < 3; ++a)
     {
-      const double x = std::clamp(c[a], 0.0, double(m_Size[a] - 1));
+      const double x = std::clamp(c[a] - double(m_Start[a]), 0.0, double(m_Size[a] - 1));
       base[a] = std::min(static_cast<long>(std::floor(x)), long(m_Size[a]) - 2);
       t[a] = x - base[a];
     }
@@ -55,6 +59,7 @@ public:
 private:
   const CtImage& m_Ct;
   const itk::Size<3> m_Size;
+  const itk::Index<3> m_Start;
 };
 
 bool InLumen(const LabelImage& lumen, const Point3& lps)
@@ -64,6 +69,38 @@ bool InLumen(const LabelImage& lumen, const Point3& lps)
     p[a] = lps[a];
   itk::Index<3> index;
   return lumen.TransformPhysicalPointToIndex(p, index) && lumen.GetPixel(index) != 0;
+}
+
+/// Circular moving average of width 2·half + 1 (the contour's smoothness: one ray's noise is not
+/// the wall's shape).
+Eigen::VectorXd SmoothCircular(const Eigen::VectorXd& r, int half)
+{
+  const Eigen::Index K = r.size();
+  Eigen::VectorXd out(K);
+  for (Eigen::Index k = 0; k < K; ++k)
+  {
+    double sum = 0.0;
+    for (int d = -half; d <= half; ++d)
+      sum += r[(k + d + K) % K];
+    out[k] = sum / (2 * half + 1);
+  }
+  return out;
+}
+
+/// Smallest and largest width of a closed contour (n × 3 in its plane), over 180 directions.
+std::pair<double, double> Calipers(const Points& contour, const Eigen::Vector3d& u, const Eigen::Vector3d& v)
+{
+  double smallest = std::numeric_limits<double>::infinity(), largest = 0.0;
+  for (int a = 0; a < 180; ++a)
+  {
+    const double angle = pi * a / 180;
+    const Eigen::Vector3d d = std::cos(angle) * u + std::sin(angle) * v;
+    const Eigen::VectorXd projection = contour * d;
+    const double width = projection.maxCoeff() - projection.minCoeff();
+    smallest = std::min(smallest, width);
+    largest = std::max(largest, width);
+  }
+  return { smallest, largest };
 }
 
 /// Kåsa's algebraic circle fit: centre (x, y) and radius from points (n × 2), n ≥ 3.
@@ -88,7 +125,111 @@ double RayCircle(const Eigen::Vector3d& circle, const Eigen::Vector2d& u)
   return b + std::sqrt(std::max(0.0, b * b - c.squaredNorm() + circle[2] * circle[2]));
 }
 
+/// The contour, areas and calipers from the plane's radii (outer capped below by nothing; the
+/// lumen's area counts the lumen up to the outer wall).
+void FinishPlane(OuterWallPlane& plane)
+{
+  const Eigen::Index K = plane.outerRadiusMm.size();
+  plane.contourLps.resize(K, 3);
+  double area = 0.0, lumenArea = 0.0;
+  const double wedge = 0.5 * std::sin(2 * pi / double(K));
+  for (Eigen::Index k = 0; k < K; ++k)
+  {
+    const double angle = 2 * pi * double(k) / double(K);
+    const Eigen::Vector3d d = std::cos(angle) * plane.uLps + std::sin(angle) * plane.vLps;
+    plane.contourLps.row(k) = (plane.centreLps + plane.outerRadiusMm[k] * d).transpose();
+    const Eigen::Index n = (k + 1) % K;
+    area += wedge * plane.outerRadiusMm[k] * plane.outerRadiusMm[n];
+    lumenArea += wedge * std::min(plane.lumenRadiusMm[k], plane.outerRadiusMm[k]) *
+                 std::min(plane.lumenRadiusMm[n], plane.outerRadiusMm[n]);
+  }
+  plane.areaMm2 = area;
+  plane.lumenAreaMm2 = lumenArea;
+  plane.areaDiameterMm = 2.0 * std::sqrt(area / pi);
+  std::tie(plane.minCaliperMm, plane.maxCaliperMm) = Calipers(plane.contourLps, plane.uLps, plane.vLps);
+}
+
 } // namespace
+
+double OuterRadiusToward(const OuterWallPlane& plane, const Eigen::Vector3d& d)
+{
+  const Eigen::Index K = plane.outerRadiusMm.size();
+  double angle = std::atan2(d.dot(plane.vLps), d.dot(plane.uLps));
+  if (angle < 0)
+    angle += 2 * pi;
+  const double x = angle / (2 * pi) * double(K);
+  const Eigen::Index k0 = static_cast<Eigen::Index>(std::floor(x)) % K, k1 = (k0 + 1) % K;
+  const double f = x - std::floor(x);
+  return (1 - f) * plane.outerRadiusMm[k0] + f * plane.outerRadiusMm[k1];
+}
+
+namespace
+{
+
+/// A flagged plane between traced ones (each within `withinMm` along the vessel, one on each
+/// side) gets their contours, ray by ray, weighted by distance: where a neighbour
+/// hides the whole circumference (the duodenum across the neck), the wall is the one above and
+/// below. Such a plane is `interpolated`; the others stay flagged without a contour.
+void InterpolateFlaggedPlanes(OuterWall& wall, double withinMm)
+{
+  std::vector<OuterWallPlane>& planes = wall.planes;
+  const int n = static_cast<int>(planes.size());
+  for (int i = 0; i < n; ++i)
+  {
+    OuterWallPlane& plane = planes[std::size_t(i)];
+    if (!plane.flagged)
+      continue;
+    int before = -1, after = -1;
+    for (int b = i - 1; b >= 0 && before < 0; --b)
+      if (!planes[std::size_t(b)].flagged && plane.abscissaMm - planes[std::size_t(b)].abscissaMm <= withinMm)
+        before = b;
+    for (int a = i + 1; a < n && after < 0; ++a)
+      if (!planes[std::size_t(a)].flagged && planes[std::size_t(a)].abscissaMm - plane.abscissaMm <= withinMm)
+        after = a;
+    if (before < 0 || after < 0)
+      continue; // between traced planes only: never extrapolated (a shoulder's diameter changes fast)
+    const double w = (plane.abscissaMm - planes[std::size_t(before)].abscissaMm) /
+                     (planes[std::size_t(after)].abscissaMm - planes[std::size_t(before)].abscissaMm);
+    const Eigen::Index K = plane.lumenRadiusMm.size();
+    for (Eigen::Index k = 0; k < K; ++k)
+    {
+      const double angle = 2 * pi * double(k) / double(K);
+      const Eigen::Vector3d d = std::cos(angle) * plane.uLps + std::sin(angle) * plane.vLps;
+      plane.outerRadiusMm[k] = (1.0 - w) * OuterRadiusToward(planes[std::size_t(before)], d) +
+                               w * OuterRadiusToward(planes[std::size_t(after)], d);
+    }
+    plane.interpolated = true;
+    FinishPlane(plane);
+  }
+}
+
+} // namespace
+
+Centerline OuterWallAxis(const OuterWall& wall, const std::string& name, double halfWindowMm)
+{
+  std::vector<const OuterWallPlane*> planes;
+  for (const OuterWallPlane& p : wall.planes)
+    if (!p.flagged) // traced, not interpolated
+      planes.push_back(&p);
+  std::vector<Point3> points;
+  std::vector<double> radii;
+  for (const OuterWallPlane* p : planes)
+  {
+    Point3 sum = Point3::Zero();
+    int n = 0;
+    for (const OuterWallPlane* q : planes)
+      if (std::abs(q->abscissaMm - p->abscissaMm) <= halfWindowMm + 1e-9)
+      {
+        sum += q->contourLps.colwise().mean().transpose();
+        ++n;
+      }
+    points.push_back(sum / n);
+    radii.push_back(0.5 * p->areaDiameterMm);
+  }
+  if (points.size() < 2)
+    return Centerline{ name, Points(0, 3), Eigen::VectorXd(0), Eigen::VectorXd(0) };
+  return MakeCenterline(name, points, radii);
+}
 
 const OuterWallPlane* OuterWall::Nearest(double s) const
 {
@@ -107,6 +248,8 @@ void ValidateOuterWallParams(const OuterWallParams& p)
   CheckRange("maxRadiusMm", p.maxRadiusMm, 5, 100, "mm");
   CheckRange("outlierMm", p.outlierMm, 0.1, 20, "mm");
   CheckRange("minimumSupport", p.minimumSupport, 0, 1, "");
+  CheckRange("smoothRays", p.smoothRays, 0, p.rays / 4, "");
+  CheckRange("interpolateWithinMm", p.interpolateWithinMm, 0, 100, "mm");
 }
 
 OuterWall SegmentOuterWall(const CtImage& ct,
@@ -114,13 +257,12 @@ OuterWall SegmentOuterWall(const CtImage& ct,
                            const Centerline& vessel,
                            double fromMm,
                            double toMm,
-                           const OuterWallParams& params)
+                           const OuterWallParams& params,
+                           const Centerline* axis)
 {
   ValidateOuterWallParams(params);
   if (vessel.Size() < 2)
     throw InputError("The centerline " + vessel.name + " has fewer than two points; no outer wall can be traced.");
-  if (ct.GetLargestPossibleRegion() != lumen.GetLargestPossibleRegion())
-    throw InputError("The CT and the lumen mask are on different grids; the outer wall needs both on one.");
   const HuSampler hu(ct);
   const int K = params.rays;
   const int samples = static_cast<int>(params.maxRadiusMm / params.sampleMm);
@@ -130,7 +272,8 @@ OuterWall SegmentOuterWall(const CtImage& ct,
     OuterWallPlane plane;
     plane.abscissaMm = s;
     plane.centreLps = PositionAt(vessel, s);
-    const Eigen::Vector3d t = TangentAt(vessel, s);
+    plane.axisAbscissaMm = axis ? ProjectOntoCenterline(*axis, plane.centreLps) : s;
+    const Eigen::Vector3d t = axis ? TangentAt(*axis, plane.axisAbscissaMm) : TangentAt(vessel, s);
     Eigen::Vector3d u = t.cross(Eigen::Vector3d::UnitX());
     if (u.norm() < 0.3)
       u = t.cross(Eigen::Vector3d::UnitY());
@@ -163,28 +306,45 @@ OuterWall SegmentOuterWall(const CtImage& ct,
     }
     plane.lumenRadiusMm.resize(K);
     for (int k = 0; k < K; ++k)
-      plane.lumenRadiusMm[k] = edge[k] * params.sampleMm;
+      plane.lumenRadiusMm[k] = (edge[k] - 0.5) * params.sampleMm; // the edge lies between the samples
     // 2. The boundary level: halfway from the vessel's layer to the fat.
     const bool hasFat = !fatLevels.empty() && !insideLevels.empty();
-    const double threshold = hasFat ? 0.5 * (Median(insideLevels) + Median(fatLevels)) : 0.0;
+    // A wall thinner than the blur never shows its plateau (the sample beyond the lumen's edge
+    // already mixes in fat): the layer's level is at least layerHu.
+    const double layer = insideLevels.empty() ? params.layerHu : std::max(Median(insideLevels), params.layerHu);
+    const double threshold = hasFat ? 0.5 * (layer + Median(fatLevels)) : 0.0;
     // 3. Candidates.
     std::vector<double> candidate(K, -1.0);
     const int minimumWall = static_cast<int>(std::ceil(params.minimumWallMm / params.sampleMm));
     const int support = static_cast<int>(std::ceil(params.fatSupportMm / params.sampleMm));
+    const double fat = hasFat ? Median(fatLevels) : 0.0;
     for (int k = 0; hasFat && k < K; ++k)
-      for (int j = edge[k] + minimumWall; j + 1 < samples; ++j)
-        if (profile[k][j] >= threshold && profile[k][j + 1] < threshold)
+    {
+      // Calcium as the anchor (vessel-wall.md §1.1): a plaque at the outer wall is far brighter
+      // than the layer, so the ray's own half-maximum between its peak and the fat is the edge;
+      // the plane's threshold would sit a blur's width outside it (−20 HU on an 800 → −100 HU
+      // edge lies 1.3 σ out). The peak is looked for before the first fat.
+      int from = edge[k] + minimumWall, peakAt = -1;
+      for (int j = std::max(0, edge[k] - 4); j < samples && profile[k][j] >= params.fatBelowHu; ++j)
+        if (profile[k][j] >= params.calciumHu && (peakAt < 0 || profile[k][j] > profile[k][peakAt]))
+          peakAt = j;
+      const double rayThreshold = peakAt >= 0 ? 0.5 * (profile[k][peakAt] + fat) : threshold;
+      if (peakAt >= 0)
+        from = std::max(from, peakAt);
+      for (int j = from; j + 1 < samples; ++j)
+        if (profile[k][j] >= rayThreshold && profile[k][j + 1] < rayThreshold)
         {
-          bool fat = false;
-          for (int q = j + 1; q < std::min(samples, j + 1 + support) && !fat; ++q)
-            fat = profile[k][q] < params.fatBelowHu;
-          if (fat)
+          bool fatFollows = false;
+          for (int q = j + 1; q < std::min(samples, j + 1 + support) && !fatFollows; ++q)
+            fatFollows = profile[k][q] < params.fatBelowHu;
+          if (fatFollows)
           {
-            const double f = (profile[k][j] - threshold) / (profile[k][j] - profile[k][j + 1]);
+            const double f = (profile[k][j] - rayThreshold) / (profile[k][j] - profile[k][j + 1]);
             candidate[k] = (j + f) * params.sampleMm;
           }
           break; // the first crossing decides: beyond it lies what is not this vessel
         }
+    }
     // 4. Robust circle: drop candidates beyond it, refit.
     std::vector<bool> kept(K);
     for (int k = 0; k < K; ++k)
@@ -226,27 +386,41 @@ OuterWall SegmentOuterWall(const CtImage& ct,
       supported += kept[k] ? 1 : 0;
     plane.supportedFraction = double(supported) / K;
     plane.flagged = plane.supportedFraction < params.minimumSupport || circle[2] <= 0.0;
-    if (supported < 3)
-      continue; // no outer wall can be drawn in this plane
     plane.supported = kept;
-    plane.outerRadiusMm.resize(K);
-    plane.contourLps.resize(K, 3);
+    plane.uLps = u;
+    plane.vLps = v;
+    plane.outerRadiusMm = plane.lumenRadiusMm;
+    if (!plane.flagged && supported >= 3)
+    {
+      // The fitted circle where a ray has no boundary; never inside the lumen, but a lumen that runs
+      // out along a branch (a renal artery) does not carry the wall with it: the lumen counts up
+      // to the circle only.
+      Eigen::VectorXd raw(K), floor(K);
+      for (int k = 0; k < K; ++k)
+      {
+        const double onCircle = RayCircle(circle, direction[k]);
+        raw[k] = kept[k] ? candidate[k] : onCircle;
+        floor[k] = std::min(plane.lumenRadiusMm[k], onCircle);
+      }
+      plane.outerRadiusMm = SmoothCircular(raw, params.smoothRays).cwiseMax(floor);
+    }
+    // Calcium along each ray, out to the wall (+0.5 mm, the plaque's blurred rim); a flagged
+    // plane's wall is not known yet: as far as the rays reach.
+    plane.calcified.assign(K, false);
+    const int reach = static_cast<int>(std::ceil(0.5 / params.sampleMm));
     for (int k = 0; k < K; ++k)
     {
-      const double r = kept[k] && !plane.flagged ? candidate[k] : RayCircle(circle, direction[k]);
-      plane.outerRadiusMm[k] = std::max(r, plane.lumenRadiusMm[k]);
-      const Eigen::Vector3d d = direction[k].x() * u + direction[k].y() * v;
-      plane.contourLps.row(k) = (plane.centreLps + plane.outerRadiusMm[k] * d).transpose();
+      const int wallAt = plane.flagged ? edge[k] + static_cast<int>(5.0 / params.sampleMm)
+                                       : static_cast<int>(plane.outerRadiusMm[k] / params.sampleMm);
+      const int last = std::min(samples - 1, wallAt + reach);
+      for (int j = std::max(0, edge[k] - 4); j <= last && !plane.calcified[k]; ++j)
+        plane.calcified[k] = profile[k][j] >= params.calciumHu;
     }
-    double area = 0.0;
-    for (int k = 0; k < K; ++k)
-      area += 0.5 * plane.outerRadiusMm[k] * plane.outerRadiusMm[(k + 1) % K] * std::sin(2 * pi / K);
-    plane.areaDiameterMm = 2.0 * std::sqrt(area / pi);
-    for (int a = 0; a < K; ++a)
-      for (int b = a + 1; b < K; ++b)
-        plane.maxCaliperMm = std::max(plane.maxCaliperMm, (plane.contourLps.row(a) - plane.contourLps.row(b)).norm());
+    if (!plane.flagged)
+      FinishPlane(plane);
     wall.planes.push_back(std::move(plane));
   }
+  InterpolateFlaggedPlanes(wall, params.interpolateWithinMm);
   return wall;
 }
 

@@ -4,17 +4,22 @@
 /// rays from the lumen centre, a boundary candidate on each, and a robust model fitted to the
 /// candidates that stands in where a sector shows no boundary.
 ///
-/// Per plane (every `stepMm` of arc length, ⊥ the centerline's tangent):
+/// Per plane (every `stepMm` of arc length, ⊥ the centerline's tangent — or, given an `axis`, ⊥
+/// that axis's tangent where the centerline point projects onto it: an eccentric thrombus tilts
+/// the lumen's centerline off the vessel's axis, and a plane ⊥ the lumen then cuts the outer wall
+/// obliquely, its area larger by 1/cos θ):
 ///  1. `rays` rays from the centerline point, evenly spaced; HU sampled trilinearly every
 ///     `sampleMm` from the lumen's edge (the first sample outside the lumen mask) out to
 ///     `maxRadiusMm`.
 ///  2. The plane's two levels: the vessel's (median HU `insideMm` beyond the lumen's edge: wall
-///     or thrombus) and the fat's (median of the samples below `fatBelowHu`); the boundary
-///     threshold is their mean — the half-maximum of the wall-to-fat edge, as the lumen's boundary
+///     or thrombus; at least `layerHu`) and the fat's (median of the samples below `fatBelowHu`);
+///     the boundary threshold is their mean — the half-maximum of the wall-to-fat edge, as the lumen's boundary
 ///     is the half-maximum of lumen-to-tissue.
 ///  3. Candidate on each ray: the first crossing of the threshold downward at least
 ///     `minimumWallMm` beyond the lumen's edge (linear between samples), where fat follows within
-///     `fatSupportMm` — a visible outer boundary.
+///     `fatSupportMm` — a visible outer boundary. On a ray with calcium (a sample ≥ `calciumHu`
+///     from 1 mm inside the lumen's edge to the first fat) the crossing is of the ray's own
+///     half-maximum between its peak and the fat, beyond the peak: calcium anchors the wall.
 ///  4. A circle fitted to the candidates (least squares, Kåsa), then repeatedly refitted without
 ///     the candidates more than `outlierMm` outside it: a neighbour that touches the vessel
 ///     without a fat plane (psoas, IVC, duodenum, a vein) moves the first fat edge outward, never
@@ -22,15 +27,24 @@
 ///     too (they still see the neighbour's blurred edge), and the circle is fitted once more. The
 ///     candidates kept are *supported*; on every other ray the boundary is the circle's.
 /// The plane records the share of its rays that were supported; with fewer than
-/// `minimumSupport` the whole plane is the fitted circle's and is flagged.
+/// `minimumSupport` it is flagged, and takes the contours of the traced planes within
+/// `interpolateWithinMm` above and below, ray by ray (`interpolated`; not one on each side: no
+/// contour — never extrapolated).
+/// A ray's outer radius is never inside the lumen — except where the lumen runs out along a
+/// branch, which counts only up to the fitted circle.
 ///
 /// Input: the CT in HU and the lumen mask on one grid (LPS), the vessel's centerline (LPS mm),
 /// the stretch [fromMm, toMm] of its abscissa. Output: per plane, the outer contour (`rays` points,
 /// LPS mm), its area-equivalent and largest caliper diameters (mm), the supported share.
-/// Errors: InputError for parameters out of range, grids that differ, or a centerline shorter
-/// than two points.
+/// The contour's radii are then averaged over 2·smoothRays + 1 neighbouring rays, never inside the
+/// lumen; the contour's calipers come from 180 directions.
+///
+/// The CT may be a crop of the lumen's grid (any buffered region; HU beyond it is the nearest
+/// edge voxel's).
+/// Errors: InputError for parameters out of range or a centerline shorter than two points.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "Centerlines/Centerlines.h"
@@ -41,30 +55,51 @@ namespace sgp
 
 struct OuterWallParams
 {
-  double stepMm = 1.0;          ///< plane spacing along the centerline, (0, 20]
-  int rays = 72;                ///< rays per plane, [16, 360]
-  double sampleMm = 0.25;       ///< along a ray, (0, 2]
-  double maxRadiusMm = 45.0;    ///< how far a ray reaches beyond the centerline, (5, 100]
-  double insideMm = 1.0;        ///< where the wall/thrombus level is read beyond the lumen's edge
-  double fatBelowHu = -30.0;    ///< adipose tissue lies below (vessel-wall.md: −190 … −30 HU)
+  double stepMm = 1.0;       ///< plane spacing along the centerline, (0, 20]
+  int rays = 72;             ///< rays per plane, [16, 360]
+  double sampleMm = 0.25;    ///< along a ray, (0, 2]
+  double maxRadiusMm = 45.0; ///< how far a ray reaches beyond the centerline, (5, 100]
+  double insideMm = 1.0;     ///< where the wall/thrombus level is read beyond the lumen's edge
+  double fatBelowHu = -30.0; ///< adipose tissue lies below (vessel-wall.md: −190 … −30 HU)
+  /// The vessel layer's level is at least this (vessel-wall.md §2: wall 60–90 HU, thrombus 30–60):
+  /// a 1.5 mm wall under a 0.5 mm blur reads 20 HU a millimetre beyond the lumen, which would put
+  /// the half-maximum 0.4 mm outside the wall.
+  double layerHu = 60.0;
   double minimumWallMm = 0.5;   ///< the boundary lies at least this far beyond the lumen's edge
   double fatSupportMm = 3.0;    ///< fat must follow the boundary within this
   double outlierMm = 1.0;       ///< candidates this far outside the fitted circle are not the wall
   double minimumSupport = 0.25; ///< below this share of supported rays the plane is flagged
+  int smoothRays = 2;           ///< the contour's radii averaged over 2·smoothRays + 1 rays, [0, rays/4]
+  /// A flagged plane takes the contours of the traced planes within this (each side), [0, 100] mm.
+  double interpolateWithinMm = 20.0;
+  /// HU at or above which a sample between the lumen's edge and the outer wall (+0.5 mm) is
+  /// calcium; +∞: none is looked for.
+  double calciumHu = std::numeric_limits<double>::infinity();
 };
 
 struct OuterWallPlane
 {
-  double abscissaMm = 0.0;
+  double abscissaMm = 0.0;           ///< along the lumen's centerline
+  double axisAbscissaMm = 0.0;       ///< along the plane-orienting axis (the lumen's centerline without one)
   Point3 centreLps = Point3::Zero(); ///< the centerline point
   Points contourLps;                 ///< rays × 3
   std::vector<bool> supported;       ///< per ray
   Eigen::VectorXd lumenRadiusMm;     ///< per ray, from the centre to the lumen's edge
-  Eigen::VectorXd outerRadiusMm;     ///< per ray, from the centre to the outer wall
+  Eigen::VectorXd outerRadiusMm;     ///< per ray, from the centre to the outer wall (smoothed, ≥ the lumen's)
+  std::vector<bool> calcified;       ///< per ray: calcium between the lumen and the outer wall
+  Eigen::VectorXd thrombusMm;        ///< per ray, thrombus thickness (set by TraceVesselWall; empty here)
+  Eigen::Vector3d uLps = Eigen::Vector3d::UnitX(),
+                  vLps = Eigen::Vector3d::UnitY(); ///< the plane's axes (ray 0 along u)
   double supportedFraction = 0.0;
-  double areaDiameterMm = 0.0; ///< of the contour polygon
-  double maxCaliperMm = 0.0;   ///< largest distance between two contour points
-  bool flagged = false;        ///< fewer supported rays than minimumSupport
+  double areaMm2 = 0.0;        ///< inside the outer contour
+  double lumenAreaMm2 = 0.0;   ///< inside the lumen's edge along the rays
+  double areaDiameterMm = 0.0; ///< of the contour polygon, 2·√(area/π)
+  double minCaliperMm = 0.0;   ///< smallest width of the contour (over 180 directions)
+  double maxCaliperMm = 0.0;   ///< largest width of the contour (its maximum caliper)
+  bool flagged = false;        ///< fewer supported rays than minimumSupport: not traced in this plane
+  bool interpolated = false;   ///< flagged, its contour from the traced planes above and below
+  /// Has a contour: traced, or interpolated between traced planes.
+  bool Usable() const { return !flagged || interpolated; }
 };
 
 struct OuterWall
@@ -82,6 +117,15 @@ OuterWall SegmentOuterWall(const CtImage& ct,
                            const Centerline& vessel,
                            double fromMm,
                            double toMm,
-                           const OuterWallParams& params = {});
+                           const OuterWallParams& params = {},
+                           const Centerline* axis = nullptr);
+
+/// The outer radius of a plane with a contour along the in-plane direction of `d` (LPS, unit;
+/// projected on the plane; linear between rays), mm.
+double OuterRadiusToward(const OuterWallPlane& plane, const Eigen::Vector3d& d);
+
+/// The vessel's axis through the outer contours: their centroids (flagged planes left out),
+/// averaged over ±`halfWindowMm` of abscissa; empty (no points) with fewer than two planes.
+Centerline OuterWallAxis(const OuterWall& wall, const std::string& name, double halfWindowMm);
 
 } // namespace sgp

@@ -1,14 +1,19 @@
 """Colours and opacities of the planning outputs and of the diameter-profile plot.
 
 Colours are RGB triples in [0, 1]. The lumen is drawn translucent so that the centerlines and the
-stent surfaces inside it stay visible; the fitted (measure-mode) surface is a pale, translucent
+stent surfaces inside it stay visible; the outer wall is a second, fainter segment around it (the
+thrombus and the wall lie between the two), drawn as an outline only in the slice views so that the
+CT and the lumen stay readable there. The fitted (measure-mode) surface is a pale, translucent
 shell, the simulated graft an opaque, warmer one coloured by its apposition gap where the CLI
-wrote that point data. Right and left are the patient's, as everywhere in the project.
+wrote that point data. The outer-wall surface model, coloured by thrombus thickness, is loaded
+hidden: the segment already shows the outer wall, and two translucent shells in one place would
+hide each other. Right and left are the patient's, as everywhere in the project.
 """
 
 import collections
 
-Look = collections.namedtuple("Look", "color opacity scalars scalarRangeMm lineWidth")
+Look = collections.namedtuple("Look", "color opacity scalars scalarRangeMm lineWidth sliceFillOpacity visible",
+                              defaults=(None, True))
 Look.__doc__ = """How one output is shown.
 
 color: RGB in [0, 1].
@@ -16,10 +21,22 @@ opacity: 0 (invisible) to 1 (opaque), in the 3D view.
 scalars: point-data array to colour by, or None for the plain colour.
 scalarRangeMm: (low, high) of the colour map when scalars is set, else None.
 lineWidth: line width in pixels (centerlines), or None.
+sliceFillOpacity: a segment's fill opacity in the slice views (0: outline only), or None for
+    Slicer's default.
+visible: shown once the run ends (False: loaded, and ready to be switched on in the Data module).
 """
+
+#: The segments of the vessel segmentation, in name -> the label map output each is made from:
+#: every voxel with a label of 1 or more (the outer wall's label map holds 1 lumen, 2 thrombus and
+#: wall, 3 calcification, so the segment is everything inside the outer wall). Their looks are
+#: LOOKS[role].
+SEGMENTS = (("Lumen", "outputLabelMap"), ("Outer wall", "outputWallLabelMap"))
 
 LOOKS = {
     "outputLabelMap": Look((0.85, 0.25, 0.2), 0.25, None, None, None),
+    "outputWallLabelMap": Look((0.85, 0.8, 0.65), 0.3, None, None, None, sliceFillOpacity=0.0),
+    # ThrombusThicknessMm: 0 (no thrombus) to 25 mm (a thick sac thrombus).
+    "outputOuterWallModel": Look((0.85, 0.8, 0.65), 0.3, "ThrombusThicknessMm", (0.0, 25.0), None, visible=False),
     "outputCenterlines": Look((1.0, 0.85, 0.1), 1.0, None, None, 3),
     "outputLandmarks": Look((0.1, 0.9, 0.9), 1.0, None, None, None),
     "outputStentModel": Look((0.55, 0.75, 1.0), 0.35, None, None, None),

@@ -1,17 +1,22 @@
 """Reading what the StentGraftSimulation CLI returns, and formatting the device recommendation.
 
-Three things come back from a run besides the nodes Slicer loads itself:
+Four things come back from a run besides the nodes Slicer loads itself:
 
 - return parameters (``--returnparameterfile``; read in Slicer with
   ``cliNode.GetParameterAsString(name)``): ``readReturnValues``;
+- the measurements table (columns name, value, unit, definition, vessel, abscissaMm, the ring's
+  min/max/area diameters, wall and estimated): ``estimatedNames`` reads which outer-wall diameters
+  sit at a level less than 60 % supported, and ``resultsTableRows`` makes the panel's table of every
+  return value with its wall (outer wall or lumen), "not measured" and the estimated flag;
 - the diameter profile table (columns vessel, abscissaMm, meanDiameterMm, minDiameterMm,
   maxDiameterMm, areaDiameterMm; one row per centerline sample of aorta, rightIliac and leftIliac):
   ``profileSeries`` splits it into one series per vessel for the plot;
 - the JSON report (``"format": "StentGraftPlanner.report/1"``): ``parseReport`` normalises it,
-  treating every missing section as "not shown" rather than an error, and
-  ``recommendationLines``/``recommendationHtml`` turn it into the panel's text.
+  treating every missing section as "not shown" rather than an error; ``withReportVerdicts`` lets
+  its hostile-neck assessment tell a passed neck from an undecided one (the return value is false
+  for both); ``recommendationLines``/``recommendationHtml`` turn it into the panel's text.
 
-Units: millimetres, degrees and percent, as the CLI writes them. Coordinates in the report are
+Units: millimetres, degrees, percent and millilitres, as the CLI writes them. Coordinates in the report are
 LPS (the CLI's frame); nothing here converts them.
 """
 
@@ -24,16 +29,22 @@ import math
 
 REPORT_FORMAT = "StentGraftPlanner.report/1"
 
-ReturnValue = collections.namedtuple("ReturnValue", "name kind unit label missing")
+ReturnValue = collections.namedtuple("ReturnValue", "name kind unit label missing wall", defaults=("",))
 ReturnValue.__doc__ = """One return parameter of the CLI that the panel reads.
 
 name: the XML <name>.
-kind: "float" or "str".
-unit: "mm", "deg", "%" or "" (a ratio), for display.
-label: the panel's text.
+kind: "float", "str" or "bool" (an XML <boolean>: true or false).
+unit: "mm", "deg", "%", "mL" or "" (a ratio), for display.
+label: the panel's text; the two diameters of one level, outer wall and lumen, share it.
 missing: the text the CLI writes when it does not have the value, where that text cannot be a
     real value (then it is read as None); None where it can, and is read as the value.
+wall: OUTER_WALL for a diameter outer wall to outer wall, LUMEN for a lumen diameter, "" for
+    anything else (lengths, angles, volumes, device sizes).
 """
+
+#: The walls a diameter is measured on (ReturnValue.wall and the measurements table's wall column).
+OUTER_WALL, LUMEN = "outer", "lumen"
+WALL_TEXT = {OUTER_WALL: "outer wall", LUMEN: "lumen", "": ""}
 
 #: The CLI writes every return value of the XML; one it does not have (not measured, a stage not
 #: run) as -1 for a number, "none" for a text (Logic/Pipeline/PlanValues.h).
@@ -41,25 +52,39 @@ NOT_MEASURED = "-1"
 NO_VALUE = "none"
 
 
-def _number(name, unit, label, missing=NOT_MEASURED):
-    """A number that cannot be negative (diameter, length, angle, tortuosity, device size): its -1
-    is always "not measured". A signed one passes missing=None."""
-    return ReturnValue(name, "float", unit, label, missing)
+def _number(name, unit, label, missing=NOT_MEASURED, wall=""):
+    """A number that cannot be negative (diameter, length, angle, tortuosity, volume, arc, device
+    size): its -1 is always "not measured". A signed one passes missing=None."""
+    return ReturnValue(name, "float", unit, label, missing, wall)
 
 
 def _text(name, label, missing=NO_VALUE):
     return ReturnValue(name, "str", "", label, missing)
 
 
+def _flag(name, label):
+    """An XML <boolean>: true or false, no "not measured" text; unreadable or empty reads as None."""
+    return ReturnValue(name, "bool", "", label, None)
+
+
+#: The diameters (a)-(f): outer wall (what the IFUs size on) and lumen, in pairs of one level.
+DIAMETER_PAIRS = (
+    ("proximalNeckDiameter", "proximalNeckLumenDiameter", "(a) proximal neck diameter"),
+    ("neckDiameter15mm", "neckLumenDiameter15mm", "(b) neck diameter 15 mm below"),
+    ("maxAneurysmDiameter", "maxAneurysmLumenDiameter", "(c) maximum aneurysm diameter"),
+    ("distalNeckMinDiameter", "distalNeckMinLumenDiameter", "(d) distal neck minimum diameter"),
+    ("rightIliacDiameter", "rightIliacLumenDiameter", "(e) right iliac diameter"),
+    ("leftIliacDiameter", "leftIliacLumenDiameter", "(f) left iliac diameter"),
+)
+
 #: The CLI's return parameters this module reads, in display order. Which ones read -1 (or
-#: "none") as missing follows the XML's descriptions; check_cli_contract.py derives it from there.
-RETURN_VALUES = (
-    _number("proximalNeckDiameter", "mm", "(a) proximal neck diameter"),
-    _number("neckDiameter15mm", "mm", "(b) neck diameter 15 mm below"),
-    _number("maxAneurysmDiameter", "mm", "(c) maximum aneurysm diameter"),
-    _number("distalNeckMinDiameter", "mm", "(d) distal neck minimum diameter"),
-    _number("rightIliacDiameter", "mm", "(e) right iliac diameter"),
-    _number("leftIliacDiameter", "mm", "(f) left iliac diameter"),
+#: "none") as missing, and which wall each diameter is on, follow the XML's descriptions;
+#: check_cli_contract.py derives both from there.
+RETURN_VALUES = tuple(
+    item
+    for outer, lumen, label in DIAMETER_PAIRS
+    for item in (_number(outer, "mm", label, wall=OUTER_WALL), _number(lumen, "mm", label, wall=LUMEN))
+) + (
     _number("proximalNeckLength", "mm", "proximal neck length"),
     _number("proximalSiteToBifurcationLength", "mm", "proximal site to bifurcation"),
     _number("rightIliacLength", "mm", "right iliac length"),
@@ -70,8 +95,14 @@ RETURN_VALUES = (
     _number("neckConicity", "%", "neck conicity", missing=None),
     _number("rightIliacTortuosity", "", "right iliac tortuosity index"),
     _number("leftIliacTortuosity", "", "left iliac tortuosity index"),
-    _number("rightAccessMinDiameter", "mm", "right access minimum diameter"),
-    _number("leftAccessMinDiameter", "mm", "left access minimum diameter"),
+    _number("rightAccessMinDiameter", "mm", "right access minimum diameter", wall=LUMEN),
+    _number("leftAccessMinDiameter", "mm", "left access minimum diameter", wall=LUMEN),
+    _number("thrombusVolume", "mL", "thrombus volume, proximal site to bifurcation"),
+    _number("sacVolume", "mL", "sac volume inside the outer wall"),
+    _number("maxThrombusThickness", "mm", "maximum thrombus thickness"),
+    _number("neckThrombusArc", "%", "neck thrombus arc (thicker than 2 mm)"),
+    _number("neckCalcificationArc", "%", "neck calcification arc"),
+    _flag("hostileNeck", "hostile neck"),
     _text("proximalSiteSource", "proximal site taken from"),
     # "none" is a result here: no family is within its instructions for use (NO_DEVICE).
     _text("recommendedDevice", "recommended device", missing=None),
@@ -87,6 +118,17 @@ NOT_MEASURED_NAMES = frozenset(item.name for item in RETURN_VALUES if item.missi
 #: (the CLI then writes -1, which the signed value itself cannot tell from a measurement).
 #: neckConicity is (b - a) / a of the XML, a = proximalNeckDiameter, b = neckDiameter15mm.
 COMPUTED_FROM = {"neckConicity": ("proximalNeckDiameter", "neckDiameter15mm")}
+
+#: Verdicts whose false the CLI also writes when a rule could not be decided (the XML's hostileNeck:
+#: "false when it passes every rule, or when a rule could not be decided"), in name -> the values
+#: its rules are decided on. A false is read as None ("not determined") when one of them is not
+#: measured; a true stands, since one failed rule makes the verdict. The quantities are those of the
+#: hostile-neck rule set (issue 12 item 4): neck length, diameter, angles beta and alpha, thrombus
+#: and calcification arcs, reverse taper between (a) and (b).
+DECIDED_FROM = {
+    "hostileNeck": ("proximalNeckLength", "proximalNeckDiameter", "neckDiameter15mm", "neckAngleBeta",
+                    "neckAngleAlpha", "neckThrombusArc", "neckCalcificationArc"),
+}
 
 #: The recommendedDevice value that means no family passed its IFU checks.
 NO_DEVICE = "none"
@@ -111,19 +153,29 @@ def _toFloat(text):
     return value if math.isfinite(value) else None
 
 
+def _toBool(text):
+    """True or False from the CLI's true/false (and 1/0, yes/no, any case), or None."""
+    return {"true": True, "1": True, "yes": True, "false": False, "0": False, "no": False}.get(
+        str(text).strip().lower())
+
+
 def readReturnValues(getParameterAsString):
     """The return values of a finished run.
 
     getParameterAsString: a function name -> str (``cliNode.GetParameterAsString`` in Slicer).
-    Returns name -> float, str or None. None where the text is empty or unreadable, where the CLI
-    wrote its "not measured" text (-1, none) for a value that cannot take it (``ReturnValue.missing``),
-    and for a computed value one of whose operands is None (``COMPUTED_FROM``).
+    Returns name -> float, str, bool or None. None where the text is empty or unreadable, where the
+    CLI wrote its "not measured" text (-1, none) for a value that cannot take it
+    (``ReturnValue.missing``), for a computed value one of whose operands is None
+    (``COMPUTED_FROM``), and for a false verdict one of whose quantities is None (``DECIDED_FROM``).
     """
     values = {}
     for item in RETURN_VALUES:
         text = (getParameterAsString(item.name) or "").strip()
         if item.kind == "str":
             values[item.name] = None if not text or text == item.missing else text
+            continue
+        if item.kind == "bool":
+            values[item.name] = _toBool(text)
             continue
         value = _toFloat(text)
         if value is not None and item.missing is not None and value == float(item.missing):
@@ -132,17 +184,87 @@ def readReturnValues(getParameterAsString):
     for name, operands in COMPUTED_FROM.items():
         if any(values[operand] is None for operand in operands):
             values[name] = None
+    for name, quantities in DECIDED_FROM.items():
+        if values[name] is False and any(values[quantity] is None for quantity in quantities):
+            values[name] = None
     return values
 
 
 def formatValue(value, unit):
-    """"23.4 mm", "12 deg", "1.05", or "not measured" for None."""
+    """"23.4 mm", "12 deg", "1.05", "Yes"/"No" for a verdict, or "not measured" for None."""
     if value is None:
         return "not measured"
+    if isinstance(value, bool):
+        return "Yes" if value else "No"
     if isinstance(value, str):
         return value
     text = "%.1f" % value
     return "%s %s" % (text, unit) if unit else "%.2f" % value
+
+
+def formatReturnValue(item, value):
+    """``formatValue``, but "not determined" for a verdict (a bool) that is None."""
+    if item.kind == "bool" and value is None:
+        return "not determined"
+    return formatValue(value, item.unit)
+
+
+_RETURN_VALUE_NAMES = frozenset(item.name for item in RETURN_VALUES)
+
+
+def _rowName(row):
+    name = str(row.get("name") or "").strip()
+    return name if name in _RETURN_VALUE_NAMES else None
+
+
+def estimatedNames(measurementRows):
+    """Names of the return values whose measurements-table row is marked estimated.
+
+    measurementRows: dicts with the table's columns name and estimated (as ``readCsvRows`` gives
+    them, or read from Slicer's table node). estimated is true (true, 1 or yes, any case) where an
+    outer-wall diameter sits at a level less than 60 % of whose circumference was supported. Rows
+    naming no return value, and a table without the column (an older CLI), mark nothing.
+    """
+    return {_rowName(row) for row in measurementRows if _rowName(row) and _toBool(row.get("estimated") or "")}
+
+
+def tableWalls(measurementRows):
+    """name -> wall (OUTER_WALL or LUMEN) of the return values whose measurements-table row names one.
+
+    The CLI's row is the authority on what it measured: the neck length and conicity are on the
+    outer wall where it was traced and on the lumen where it was not, which the return value alone
+    does not say. An empty or unknown wall text gives no entry (the value keeps ReturnValue.wall).
+    """
+    walls = {}
+    for row in measurementRows:
+        wall = str(row.get("wall") or "").strip().lower()
+        if _rowName(row) and wall in (OUTER_WALL, LUMEN):
+            walls[_rowName(row)] = wall
+    return walls
+
+
+#: Column titles of the panel's results table (``resultsTableRows``).
+RESULTS_COLUMNS = ("Measurement", "Value", "Wall", "Estimated")
+
+
+def resultsTableRows(values, measurementRows=()):
+    """The panel's results table: one row per return value, in RETURN_VALUES order.
+
+    values: as from ``readReturnValues``; measurementRows: the measurements table's rows (for the
+    wall and the estimated flag; ``tableWalls``, ``estimatedNames``). Each row is (label, value text,
+    wall text, estimated text): the value as ``formatReturnValue`` shows it ("not measured",
+    "Yes"/"No"/"not determined"); the wall "outer wall" or "lumen" as the table's row gives it, else
+    as ReturnValue.wall ("" where no wall applies); "yes" where the table marks a measured value
+    estimated, else "".
+    """
+    measurementRows = list(measurementRows)
+    estimated, walls = estimatedNames(measurementRows), tableWalls(measurementRows)
+    rows = []
+    for item in RETURN_VALUES:
+        value = values.get(item.name)
+        flag = "yes" if item.name in estimated and value is not None else ""
+        rows.append((item.label, formatReturnValue(item, value), WALL_TEXT[walls.get(item.name, item.wall)], flag))
+    return rows
 
 
 def readCsvRows(text):
@@ -194,8 +316,10 @@ def parseReport(text):
     Raises ValueError when the text is not a JSON object or names another format (a report of a
     newer major version would be misread). Every section may be absent:
     returns a dict with proximalSite (dict or None), measurements (list of dicts), warnings (list
-    of str), recommendation (dict or None), families (list of dicts, each with a list of checks)
-    and fitCheck (dict or None).
+    of str), recommendation (dict or None), families (list of dicts, each with a list of checks),
+    fitCheck (dict or None) and hostileNeck (dict or None: the neck's assessment against the
+    hostile-neck rules, read as {"hostile": bool, "determinate": bool, "summary": str, "checks":
+    [{"name", "status", "text", ...}]}, every field optional).
     """
     try:
         data = json.loads(text)
@@ -223,7 +347,25 @@ def parseReport(text):
         "recommendation": _normalRecommendation(_dict(device.get("recommendation")), families),
         "families": families,
         "fitCheck": _dict(data.get("fitCheck")),
+        "hostileNeck": _dict(data.get("hostileNeck")),
     }
+
+
+def withReportVerdicts(values, report):
+    """The return values with hostileNeck as the report's assessment decides it, where it can.
+
+    The return value is false both for a neck that passes every rule and for one with an undecided
+    rule; the report's hostileNeck section tells them apart: hostile true gives True, hostile false
+    gives False when determinate is true and None ("not determined") when it is false. Without the
+    section (or without those two booleans) the values are returned unchanged (``DECIDED_FROM``
+    already applied). Returns a new dict.
+    """
+    decided = dict(values)
+    section = report.get("hostileNeck") or {}
+    hostile, determinate = section.get("hostile"), section.get("determinate")
+    if isinstance(hostile, bool) and isinstance(determinate, bool):
+        decided["hostileNeck"] = True if hostile else (False if determinate else None)
+    return decided
 
 
 def _normalRecommendation(recommendation, families):
@@ -331,6 +473,16 @@ def recommendationLines(report):
             if status in ("fail", "indeterminate"):
                 text = check.get("text") or check.get("criterion", "?")
                 lines.append((status, text))
+    neck = report.get("hostileNeck")
+    if neck:
+        lines.append(("heading", "Hostile-neck rules"))
+        if neck.get("summary"):
+            decided = withReportVerdicts({"hostileNeck": None}, report)["hostileNeck"]
+            kind = {True: "fail", False: "ok"}.get(decided, "indeterminate")
+            lines.append((kind, str(neck["summary"])))
+        for check in _list(neck.get("checks")):
+            if isinstance(check, dict) and check.get("status") in ("fail", "indeterminate"):
+                lines.append((check["status"], str(check.get("text") or check.get("name", "?"))))
     fitCheck = report.get("fitCheck")
     if fitCheck:
         lines.append(("heading", "Fit check of the simulated graft"))
@@ -357,6 +509,10 @@ def recommendationHtml(report):
     return "<br>".join(parts) if parts else "The report holds no device recommendation."
 
 
-def measurementSummaryLines(values):
-    """One "label: value unit" line per return value, in RETURN_VALUES order."""
-    return ["%s: %s" % (item.label, formatValue(values.get(item.name), item.unit)) for item in RETURN_VALUES]
+def measurementSummaryLines(values, measurementRows=()):
+    """One "label, wall: value unit (estimated)" line per return value, in RETURN_VALUES order (the
+    wall only on diameters, the flag only where the measurements table marks the value)."""
+    lines = []
+    for label, value, wall, estimated in resultsTableRows(values, measurementRows):
+        lines.append("%s%s: %s%s" % (label, ", " + wall if wall else "", value, " (estimated)" if estimated else ""))
+    return lines

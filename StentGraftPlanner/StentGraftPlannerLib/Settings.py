@@ -5,7 +5,8 @@ Each setting has a name, a kind, a default and the name of the widget in
 the CLI under the same name, so their names and defaults must equal the ``<name>`` and
 ``<default>`` of ``CLI/StentGraftSimulation.xml`` (the single source of truth; a CTest test
 compares the two). The others are combined into one CLI argument each (``device``,
-``proximalOversizingRange``, ``deviceCatalog``).
+``proximalOversizingRange``), or sent only when set (``deviceCatalog``, ``neckRules``: an empty
+path leaves the CLI on the file installed beside it).
 
 Settings are stored in the module's parameter node as strings (``settingsToStrings`` and
 ``settingsFromStrings``), so the panel state is saved with the scene; a scene from an older
@@ -71,6 +72,8 @@ SETTINGS = (
     _setting("oversizingMinPercent", "float", 10.0, "oversizingMinSpinBox", cli=False),
     _setting("oversizingMaxPercent", "float", 20.0, "oversizingMaxSpinBox", cli=False),
     _setting("deviceCatalogPath", "str", "", "deviceCatalogPathLineEdit", cli=False),
+    # Hostile-neck rule set: the CLI's neckRules, sent only when a file is chosen.
+    _setting("neckRulesPath", "str", "", "neckRulesPathLineEdit", cli=False),
 )
 
 SETTINGS_BY_NAME = {s.name: s for s in SETTINGS}
@@ -90,6 +93,10 @@ NODE_ROLES = (
     NodeRole("seed", "vtkMRMLMarkupsFiducialNode", "input", True, ""),
     NodeRole("lowestRenalOstium", "vtkMRMLMarkupsFiducialNode", "input", False, ""),
     NodeRole("outputLabelMap", "vtkMRMLLabelMapVolumeNode", "output", False, "Lumen"),
+    # 1 lumen, 2 thrombus and wall, 3 calcification: everything inside the outer wall.
+    NodeRole("outputWallLabelMap", "vtkMRMLLabelMapVolumeNode", "output", False, "Vessel wall"),
+    # Point data ThrombusThicknessMm and Supported.
+    NodeRole("outputOuterWallModel", "vtkMRMLModelNode", "output", False, "Outer wall surface"),
     NodeRole("outputCenterlines", "vtkMRMLModelNode", "output", False, "Centerlines"),
     NodeRole("outputLandmarks", "vtkMRMLMarkupsFiducialNode", "output", False, "Landmarks"),
     NodeRole("outputStentModel", "vtkMRMLModelNode", "output", False, "Fitted stent surface"),
@@ -103,6 +110,9 @@ OUTPUT_ROLES = tuple(r for r in NODE_ROLES if r.channel == "output")
 
 #: CLI parameter of the JSON report (a ``file`` output: Slicer passes the path unchanged).
 REPORT_PARAMETER = "outputReport"
+
+#: Optional input files: CLI parameter -> the setting holding its path (sent only when not empty).
+FILE_PARAMETERS = (("deviceCatalog", "deviceCatalogPath"), ("neckRules", "neckRulesPath"))
 
 #: How far apart the oversizing bounds may lie, in percent of the vessel diameter.
 OVERSIZING_RANGE_PERCENT = (0.0, 50.0)
@@ -267,8 +277,9 @@ def buildCliParameters(settings, nodes, pointCounts, reportPath):
         formatNumber(settings["oversizingMinPercent"]),
         formatNumber(settings["oversizingMaxPercent"]),
     )
-    if settings["deviceCatalogPath"]:
-        parameters["deviceCatalog"] = settings["deviceCatalogPath"]
+    for parameter, setting in FILE_PARAMETERS:
+        if settings[setting]:
+            parameters[parameter] = settings[setting]
     for role in NODE_ROLES:
         node = nodes.get(role.name)
         if node is None:

@@ -123,13 +123,13 @@ TEST_P(AvtCase, MeasureModeStentSurfaceSettlesOnTheWallAndMeasuresPlausibly)
   // No truth here, so plausibility for adult, non-aneurysmal vessels: common iliacs 6–16 mm across,
   // a distal aorta 10–25 mm, common iliacs 20–100 mm long to the internal iliac origin.
   const Measurements& m = plan.measurements;
-  for (const char* iliac : { "rightIliacDiameter", "leftIliacDiameter" })
+  for (const char* iliac : { "rightIliacLumenDiameter", "leftIliacLumenDiameter" })
   {
     EXPECT_GT(m.Value(iliac), 6.0) << iliac;
     EXPECT_LT(m.Value(iliac), 16.0) << iliac;
   }
-  EXPECT_GT(m.Value("distalNeckMinDiameter"), 10.0);
-  EXPECT_LT(m.Value("distalNeckMinDiameter"), 25.0);
+  EXPECT_GT(m.Value("distalNeckMinLumenDiameter"), 10.0);
+  EXPECT_LT(m.Value("distalNeckMinLumenDiameter"), 25.0);
   for (const char* length : { "rightIliacLength", "leftIliacLength" })
   {
     EXPECT_GT(m.Value(length), 20.0) << length;
@@ -153,11 +153,11 @@ TEST_P(AvtCase, MeasureModeStentSurfaceSettlesOnTheWallAndMeasuresPlausibly)
   }
   // D4's tortuous right iliac folds the fitted rings of its landing zone: (e) is the centerline's
   // inscribed diameter there, the definition says so, and a warning names the value.
-  const Measurement* e = m.Find("rightIliacDiameter");
+  const Measurement* e = m.Find("rightIliacLumenDiameter");
   ASSERT_NE(e, nullptr);
   const bool fallback = e->definition.find("inscribed-sphere diameter of the centerline") != std::string::npos;
   EXPECT_EQ(fallback, name == "D4") << e->definition;
-  EXPECT_EQ(warned("rightIliacDiameter is the centerline's inscribed diameter"), name == "D4");
+  EXPECT_EQ(warned("rightIliacLumenDiameter is the centerline's inscribed diameter"), name == "D4");
 }
 
 INSTANTIATE_TEST_SUITE_P(RealAnatomy, AvtCase, ::testing::Values("D1", "D2", "D3", "D4"));

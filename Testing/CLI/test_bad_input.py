@@ -263,6 +263,20 @@ def main():
                  ["NoSuchGraft", catalogue])
         bad_case(cli, workdir, "inverted-oversizing", volume,
                  valid_seed + measure + ["--proximalOversizingRange", "20,10"], ["proximalOversizingRange", "20.0,10.0"])
+    # The hostile-neck rules (issue 12): read before the image is processed; a planted defect
+    # names the file, the rule and the field, and no output is left behind.
+    rules_path = os.path.join(os.path.dirname(cli), "hostile-neck-rules.json")  # installed beside the CLI
+    if check(os.path.isfile(rules_path), "the default hostile-neck rules sit beside the CLI", rules_path):
+        with open(rules_path, encoding="utf-8") as handle:
+            rules = json.load(handle)
+        rule_id = rules["rules"][2]["id"]
+        rules["rules"][2]["threshold"] = "sixty"
+        broken_rules = os.path.join(workdir, "broken-neck-rules.json")
+        with open(broken_rules, "w", encoding="utf-8") as handle:
+            json.dump(rules, handle)
+        bad_case(cli, workdir, "neck-rules-wrong-type", volume,
+                 valid_seed + ["--outputMeasurements", "{outdir}/measurements.csv", "--neckRules", broken_rules],
+                 [broken_rules, rule_id, "threshold"])
     # A lowest-renal point far from the aorta cannot be on its wall.
     bad_case(cli, workdir, "renal-point-off-the-aorta", volume,
              valid_seed + ["--outputMeasurements", "{outdir}/measurements.csv", "--lowestRenalOstium", "90,0,60"],

@@ -4,8 +4,9 @@
 Usage: test_measurements_cli.py --phantom PHANTOM_EXE --cli SGS_EXE --workdir DIR
 
 One phantom (noisy, 0.8 x 0.8 x 1.0 mm; right common iliac 10 mm, left 14 mm so that a
-right/left swap cannot hide) and three runs of StentGraftSimulation, each with the argv Slicer
-builds from the XML (test_slicer_run.run_like_slicer):
+right/left swap cannot hide; a 1.5 mm wall and a 10 mm crescent of sac thrombus in periaortic fat,
+issue 12) and three runs of StentGraftSimulation, each with the argv Slicer builds from the XML
+(test_slicer_run.run_like_slicer):
   A. the phantom file as written (LPS space), no --lowestRenalOstium: the site comes from the
      renal branches (proximalSiteSource = renal);
   B. the same with --lowestRenalOstium on the right aortic wall 10 mm below the true site (RAS,
@@ -17,9 +18,10 @@ builds from the XML (test_slicer_run.run_like_slicer):
      it with no output selected (issue 11): every output scalar the --xml declares is in the
      file, and (a)-(f) within the same bars.
 Checked in each: exit 0, the return-parameter file holds every measurement (the contract names
-of DESIGN.md and the angles), the diameters within 1.0 mm and lengths within 3 mm of the truth
-(issue 5's bars), β within 5 degrees; the measurements table (CSV) has the declared header and
-the same values as the return file; the diameter profile has rows for the aorta and both iliacs;
+of DESIGN.md and the angles), the outer-wall (a)-(f) against the outer truth and the lumen ones
+against the lumen truth, each within 1.0 mm, lengths at their accuracy, β within 5 degrees; the
+measurements table (CSV) has the declared header (with its wall and estimated columns, each
+diameter on the wall its name says) and the same values as the return file; the diameter profile has rows for the aorta and both iliacs;
 the JSON report parses and agrees with the table, and the Slicer panel's reader
 (StentGraftPlannerLib.Results) finds in it the device and fit check the CLI returned.
 Prints one line per check and `N passed, M failed`; exits 1 on any failure.
@@ -31,7 +33,10 @@ import json
 import os
 import sys
 
+import numpy as np
+
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import sem_rules  # noqa: E402
 from test_slicer_run import as_float, check, discover, finish, run_like_slicer  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "StentGraftPlanner"))
@@ -39,6 +44,12 @@ from StentGraftPlannerLib import Results  # noqa: E402
 
 DIAMETERS = ["proximalNeckDiameter", "neckDiameter15mm", "maxAneurysmDiameter", "distalNeckMinDiameter",
              "rightIliacDiameter", "leftIliacDiameter"]
+# The outer-wall diameters' truth keys; the lumen ones are the names with "Lumen" against the
+# truth's plain keys.
+OUTER_TRUTH = {name: "outer" + name[0].upper() + name[1:] for name in DIAMETERS}
+LUMEN = {name: name.replace("Diameter", "LumenDiameter") for name in DIAMETERS}
+WALL_VALUES = ["thrombusVolume", "sacVolume", "maxThrombusThickness", "neckThrombusArc", "neckCalcificationArc"]
+THROMBUS_FRACTION = 0.10  # issue 12's bar for the thrombus volume
 LENGTHS = ["proximalNeckLength", "proximalSiteToBifurcationLength", "rightIliacLength", "leftIliacLength"]
 OTHERS = ["neckAngleBeta", "neckAngleAlpha", "neckConicity", "rightIliacTortuosity", "leftIliacTortuosity",
           "rightAccessMinDiameter", "leftAccessMinDiameter"]
@@ -88,15 +99,20 @@ def check_run(label, returned, files, truth, expect_source, shift_mm):
     check(returned.get("proximalSiteSource") == expect_source, f"{label}: proximalSiteSource = {expect_source}",
           str(returned.get("proximalSiteSource")))
     values = {}
-    for name in DIAMETERS + LENGTHS + OTHERS:
+    for name in DIAMETERS + list(LUMEN.values()) + LENGTHS + OTHERS + WALL_VALUES:
         try:
             values[name] = float(returned[name])
         except (KeyError, ValueError):
             check(False, f"{label}: return file has {name}", str(returned.get(name)))
     for name in DIAMETERS:
-        if name in values:
-            check(abs(values[name] - sizing[name]) <= DIAMETER_MM, f"{label}: {name} within {DIAMETER_MM} mm",
-                  f"{values[name]:.2f} vs {sizing[name]:.2f}")
+        for measured, expected in ((name, OUTER_TRUTH[name]), (LUMEN[name], name)):
+            if measured in values:
+                check(abs(values[measured] - sizing[expected]) <= DIAMETER_MM,
+                      f"{label}: {measured} within {DIAMETER_MM} mm of the truth's {expected}",
+                      f"{values[measured]:.2f} vs {sizing[expected]:.2f}")
+    if "thrombusVolume" in values:
+        check(abs(values["thrombusVolume"] - sizing["thrombusVolumeMl"]) <= THROMBUS_FRACTION * sizing["thrombusVolumeMl"],
+              f"{label}: thrombusVolume within 10 %", f"{values['thrombusVolume']:.2f} vs {sizing['thrombusVolumeMl']:.2f}")
     for name in LENGTHS:
         expected = sizing[name] - (shift_mm if name in ("proximalNeckLength", "proximalSiteToBifurcationLength") else 0)
         if name in values:
@@ -108,14 +124,17 @@ def check_run(label, returned, files, truth, expect_source, shift_mm):
 
     table = read_table(files["outputMeasurements"]) if os.path.isfile(files["outputMeasurements"]) else []
     header = ["name", "value", "unit", "definition", "vessel", "abscissaMm", "minDiameterMm", "maxDiameterMm",
-              "areaDiameterMm"]
+              "areaDiameterMm", "wall", "estimated"]
     check(table and table[0] == header, f"{label}: measurements table has the declared header",
           str(table[:1]))
     rows = {row[0]: row for row in table[1:] if row}
-    for name in DIAMETERS + LENGTHS + OTHERS:
+    for name in DIAMETERS + list(LUMEN.values()) + LENGTHS + OTHERS + WALL_VALUES:
         row = rows.get(name)
         if not check(row is not None and len(row) == len(header), f"{label}: table row {name}"):
             continue
+        if name in DIAMETERS or name in LUMEN.values():
+            wall = "lumen" if "Lumen" in name else "outer"
+            check(row[9] == wall, f"{label}: table {name} says it is the {wall} wall's", row[9])
         # 1e-6 relative: both print the same double with up to 10 significant digits.
         same = name in values and row[1] != "" and abs(float(row[1]) - values[name]) <= 1e-6 * max(1, abs(values[name]))
         check(same, f"{label}: table {name} equals the returned value", f"{row[1]} vs {values.get(name)}")
@@ -166,6 +185,39 @@ def check_run(label, returned, files, truth, expect_source, shift_mm):
           f"{label}: panel reads the fit check", str(parsed["fitCheck"])[:200])
 
 
+def check_wall_outputs(files, truth):
+    """The wall label map (1 lumen, 2 thrombus and wall, 3 calcium) and the outer wall model."""
+    import vtk  # Debian's python3-vtk9
+    labels, header = sem_rules.read_nrrd(files["outputWallLabelMap"])
+    present = set(int(v) for v in np.unique(labels))
+    check(present <= {0, 1, 2, 3} and {0, 1, 2} <= present, "A: wall label map holds lumen, thrombus and wall",
+          str(sorted(present)))
+    # Thrombus and wall between the site and the bifurcation: the truth's thrombus plus the wall's
+    # shell there; the label map also holds the wall above the site and of the iliacs, so only
+    # "more than the thrombus alone" is a fixed claim.
+    voxel_mm3 = float(np.prod(header["spacing"]))
+    layer_ml = float(np.count_nonzero(labels == 2)) * voxel_mm3 / 1000.0
+    check(layer_ml > truth["sizing"]["thrombusVolumeMl"], "A: label 2 holds at least the thrombus",
+          f"{layer_ml:.1f} vs {truth['sizing']['thrombusVolumeMl']:.1f} mL")
+    model_reader = vtk.vtkXMLPolyDataReader()
+    model_reader.SetFileName(files["outputOuterWallModel"])
+    model_reader.Update()
+    model = model_reader.GetOutput()
+    space = model.GetFieldData().GetAbstractArray("SPACE")
+    check(space is not None and space.GetValue(0) == "LPS", "A: outer wall model carries SPACE = LPS")
+    point_data = model.GetPointData()
+    for name in ("ThrombusThicknessMm", "Supported"):
+        array = point_data.GetArray(name)
+        check(array is not None and array.GetNumberOfTuples() == model.GetNumberOfPoints() > 0,
+              f"A: outer wall model has point data {name}")
+    thickness = point_data.GetArray("ThrombusThicknessMm")
+    if thickness is not None:
+        thickest = max(thickness.GetRange())
+        # issue 12's bar for the maximum thrombus thickness: 2 mm
+        check(abs(thickest - truth["sizing"]["maxThrombusThicknessMm"]) <= 2.0,
+              "A: outer wall model's thickest thrombus within 2 mm of the truth", f"{thickest:.1f} mm")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--phantom", required=True)
@@ -181,7 +233,8 @@ def main():
     truth_path = os.path.join(workdir, "truth.json")
     run_like_slicer(phantom_exe, phantom_params,
                     {"outputVolume": volume, "outputTruth": truth_path, "rightIliacDiameterMm": 10,
-                     "leftIliacDiameterMm": 14}, workdir, "SyntheticAorticPhantom")
+                     "leftIliacDiameterMm": 14, "wallThicknessMm": 1.5, "thrombusMaxThicknessMm": 10,
+                     "tissueHu": -100}, workdir, "SyntheticAorticPhantom")
     if not check(os.path.isfile(volume) and os.path.isfile(truth_path), "phantom written"):
         return finish()
     with open(truth_path, encoding="utf-8") as handle:
@@ -202,12 +255,17 @@ def main():
         files = {"outputMeasurements": os.path.join(workdir, f"measurements-{tag}.csv"),
                  "outputDiameterProfile": os.path.join(workdir, f"profile-{tag}.csv"),
                  "outputReport": os.path.join(workdir, f"report-{tag}.json")}
+        if tag == "A":
+            files["outputWallLabelMap"] = os.path.join(workdir, "wall-A.nrrd")
+            files["outputOuterWallModel"] = os.path.join(workdir, "outer-wall-A.vtp")
         for stale in files.values():
             if os.path.exists(stale):
                 os.remove(stale)
         values = dict(files, inputVolume=path, seed=truth["seedRas"], **extra)
         _, returned = run_like_slicer(cli_exe, params, values, workdir, f"StentGraftSimulation {label}")
         check_run(label, returned, files, truth, source, shift)
+        if tag == "A":
+            check_wall_outputs(files, truth)
         returned_by_run[tag] = returned
 
     # C read the same voxels as A, stored in RAS space: every number must agree to SAME_MM (a RAS/LPS
@@ -231,8 +289,9 @@ def main():
     check(declared and not missing, f"D: all {len(declared)} declared return values written", f"missing {missing}")
     for name in DIAMETERS:
         value = as_float(returned.get(name))
-        check(value is not None and abs(value - truth["sizing"][name]) <= DIAMETER_MM,
-              f"D: {name} within {DIAMETER_MM} mm", f"{returned.get(name)} vs {truth['sizing'][name]:.2f}")
+        expected = truth["sizing"][OUTER_TRUTH[name]]
+        check(value is not None and abs(value - expected) <= DIAMETER_MM,
+              f"D: {name} within {DIAMETER_MM} mm", f"{returned.get(name)} vs {expected:.2f}")
     return finish()
 
 

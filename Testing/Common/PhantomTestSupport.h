@@ -23,6 +23,16 @@ inline Eigen::Matrix3d ObliqueFlippedDirection()
   return rotation * Eigen::Vector3d(1.0, -1.0, 1.0).asDiagonal(); // j axis flipped: det = −1
 }
 
+/// `p` as a patient's CTA shows an aorta without thrombus: a 1.5 mm wall (vessel-wall.md §2:
+/// 1.5–2.3 mm on CT) in periaortic fat (−100 HU), so that the outer wall is visible; its
+/// diameters are then outer-wall diameters and the lumen lies inside the wall.
+inline PhantomParams WithWallInFat(PhantomParams p, double wallMm = 1.5)
+{
+  p.wallThicknessMm = wallMm;
+  p.tissueHu = -100.0;
+  return p;
+}
+
 /// Voxel counts of a binary segmentation against the truth labels.
 struct Overlap
 {

@@ -3,6 +3,7 @@
 /// for tests.
 #pragma once
 
+#include <algorithm>
 #include <optional>
 
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include "Phantom/AorticPhantom.h"
 #include "Segmentation/GrowLumenRegion.h"
 #include "Stent/ActiveContour.h"
+#include "Wall/VesselWall.h"
 
 namespace sgp::testing
 {
@@ -40,44 +42,68 @@ struct MeasuredPlan
   StentMesh mesh;
   WallDistanceField wall;
   ActiveContourResult fit;
+  VesselWall vesselWall; ///< traced when the CT was given (MeasureFromCt)
   Measurements measurements;
 };
 
 /// Builds the stent mesh with `meshParams` (its proximal start defaulting to the plan's site),
-/// the wall field around it, the measure-mode fit and the measurements, as the CLI does.
-inline void FitAndMeasure(MeasuredPlan& plan, StentMeshParams meshParams = {})
+/// the wall field around it, the measure-mode fit, the outer wall (when `ct` is given; calcium
+/// above `calciumHu`) and the measurements, as the CLI does.
+inline void FitAndMeasure(MeasuredPlan& plan,
+                          StentMeshParams meshParams = {},
+                          const CtImage* ct = nullptr,
+                          double calciumHu = 1000.0)
 {
   if (meshParams.proximalAbscissaMm < 0.0)
     meshParams.proximalAbscissaMm = plan.site.abscissaMm;
   plan.mesh = BuildStentMesh(plan.tree, meshParams);
   plan.wall = WallDistanceField::FromLumen(*plan.lumen, 5.0, StentReach(plan.mesh, plan.tree));
   plan.fit = FitActiveContour(plan.mesh, plan.wall, ActiveContourParams::Measure());
-  plan.measurements = MeasureAnatomy(plan.tree, plan.mesh, plan.fit.V, plan.site);
+  if (ct)
+  {
+    VesselWallParams wallParams;
+    wallParams.calciumHu = std::min(calciumHu, wallParams.calciumHu);
+    plan.vesselWall = TraceVesselWall(*ct, *plan.lumen, plan.tree, plan.site.abscissaMm, wallParams);
+  }
+  plan.measurements = MeasureAnatomy(plan.tree, plan.mesh, plan.fit.V, plan.site, ct ? &plan.vesselWall : nullptr);
 }
 
-/// Segmentation, centerlines, proximal site, stent mesh from the site, measure-mode fit and
-/// measurements, with the CLI's default parameters.
+/// Segmentation, centerlines, proximal site, stent mesh from the site, measure-mode fit, outer
+/// wall and measurements, with the CLI's default parameters.
 inline MeasuredPlan MeasureFromCt(const CtImage& ct,
                                   const Point3& seedLps,
                                   const std::optional<Point3>& lowestRenalOstiumLps = {})
 {
   MeasuredPlan plan;
-  plan.lumen = GrowLumenRegion(ct, seedLps, RegionGrowingParams{}).mask;
+  const LumenSegmentation lumen = GrowLumenRegion(ct, seedLps, RegionGrowingParams{});
+  plan.lumen = lumen.mask;
   plan.tree = CenterlinesFromMask(*plan.lumen);
   plan.site = FindProximalSite(plan.tree, lowestRenalOstiumLps);
-  FitAndMeasure(plan);
+  FitAndMeasure(plan, {}, &ct, lumen.calciumHu);
   return plan;
 }
 
-/// (a)–(f) of `m` each within `diameterMm` of the phantom's truth (the same six in every test).
+/// The lumen (a)–(f) of `m` each within `diameterMm` of the phantom's lumen truth (the same six
+/// in every test).
 inline void ExpectDiametersNear(const Measurements& m, const PhantomSizing& truth, double diameterMm)
 {
-  EXPECT_NEAR(m.Value("proximalNeckDiameter"), truth.proximalNeckDiameter, diameterMm);
-  EXPECT_NEAR(m.Value("neckDiameter15mm"), truth.neckDiameter15mm, diameterMm);
-  EXPECT_NEAR(m.Value("maxAneurysmDiameter"), truth.maxAneurysmDiameter, diameterMm);
-  EXPECT_NEAR(m.Value("distalNeckMinDiameter"), truth.distalNeckMinDiameter, diameterMm);
-  EXPECT_NEAR(m.Value("rightIliacDiameter"), truth.rightIliacDiameter, diameterMm);
-  EXPECT_NEAR(m.Value("leftIliacDiameter"), truth.leftIliacDiameter, diameterMm);
+  EXPECT_NEAR(m.Value("proximalNeckLumenDiameter"), truth.proximalNeckDiameter, diameterMm);
+  EXPECT_NEAR(m.Value("neckLumenDiameter15mm"), truth.neckDiameter15mm, diameterMm);
+  EXPECT_NEAR(m.Value("maxAneurysmLumenDiameter"), truth.maxAneurysmDiameter, diameterMm);
+  EXPECT_NEAR(m.Value("distalNeckMinLumenDiameter"), truth.distalNeckMinDiameter, diameterMm);
+  EXPECT_NEAR(m.Value("rightIliacLumenDiameter"), truth.rightIliacDiameter, diameterMm);
+  EXPECT_NEAR(m.Value("leftIliacLumenDiameter"), truth.leftIliacDiameter, diameterMm);
+}
+
+/// The outer-wall (a)–(f) of `m` each within `diameterMm` of the phantom's outer-wall truth.
+inline void ExpectOuterDiametersNear(const Measurements& m, const PhantomSizing& truth, double diameterMm)
+{
+  EXPECT_NEAR(m.Value("proximalNeckDiameter"), truth.outerProximalNeckDiameter, diameterMm);
+  EXPECT_NEAR(m.Value("neckDiameter15mm"), truth.outerNeckDiameter15mm, diameterMm);
+  EXPECT_NEAR(m.Value("maxAneurysmDiameter"), truth.outerMaxAneurysmDiameter, diameterMm);
+  EXPECT_NEAR(m.Value("distalNeckMinDiameter"), truth.outerDistalNeckMinDiameter, diameterMm);
+  EXPECT_NEAR(m.Value("rightIliacDiameter"), truth.outerRightIliacDiameter, diameterMm);
+  EXPECT_NEAR(m.Value("leftIliacDiameter"), truth.outerLeftIliacDiameter, diameterMm);
 }
 
 } // namespace sgp::testing

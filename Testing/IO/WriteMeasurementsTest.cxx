@@ -50,10 +50,14 @@ Measurements Sample()
   m.site.source = ProximalSiteSource::Renal;
   m.site.abscissaMm = 88.5;
   m.site.renal = "rightRenal";
-  Measurement a{ "proximalNeckDiameter", 22.25, "mm", "(a) mean ring diameter, lumen, \"quoted\"", "aorta", 88.5 };
+  Measurement a{
+    "proximalNeckDiameter", 22.25, "mm", "(a) area-equivalent diameter, outer wall, \"quoted\"", "aorta", 88.5
+  };
   a.minMm = 21.5;
   a.maxMm = 23.0;
   a.areaMm = 22.0;
+  a.wall = "outer";
+  a.estimated = true;
   m.values.push_back(a);
   m.values.push_back({ "neckAngleAlpha", std::nan(""), "deg", "suprarenal, not covered", "aorta", 58.5 });
   DiameterProfile trunk;
@@ -71,11 +75,14 @@ TEST(WriteMeasurements, Table_HeaderQuotedTextEmptyWhenNotMeasured)
 {
   const auto rows = ParseCsv(FormatMeasurementsTable(Sample()));
   ASSERT_EQ(rows.size(), 3u);
-  EXPECT_EQ(rows[0], (std::vector<std::string>{ "name", "value", "unit", "definition", "vessel", "abscissaMm",
-                                                "minDiameterMm", "maxDiameterMm", "areaDiameterMm" }));
+  EXPECT_EQ(rows[0],
+            (std::vector<std::string>{ "name", "value", "unit", "definition", "vessel", "abscissaMm", "minDiameterMm",
+                                       "maxDiameterMm", "areaDiameterMm", "wall", "estimated" }));
   EXPECT_EQ(rows[1], (std::vector<std::string>{ "proximalNeckDiameter", "22.25", "mm",
-                                                "(a) mean ring diameter, lumen, \"quoted\"", "aorta", "88.5", "21.5",
-                                                "23", "22" }));
+                                                "(a) area-equivalent diameter, outer wall, \"quoted\"", "aorta", "88.5",
+                                                "21.5", "23", "22", "outer", "true" }));
+  EXPECT_EQ(rows[2][9], "");       // neither wall applies
+  EXPECT_EQ(rows[2][10], "false"); // not estimated
   EXPECT_EQ(rows[2][0], "neckAngleAlpha");
   EXPECT_EQ(rows[2][1], ""); // not measured: empty, never "nan"
   EXPECT_EQ(rows[2][6], "");

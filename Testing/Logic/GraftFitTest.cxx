@@ -10,6 +10,7 @@
 #include "Device/SelectDevice.h"
 #include "IO/ReadDeviceCatalog.h"
 #include "Phantom/AorticPhantom.h"
+#include "PhantomTestSupport.h"
 #include "PipelineSupport.h"
 
 namespace sgp
@@ -32,7 +33,8 @@ FitCheck Simulate(const MeasuredPlan& plan, const std::array<double, 3>& diamete
 {
   const ActiveContourResult graft = FitActiveContour(plan.mesh, plan.wall, ActiveContourParams::Simulate(diameters));
   EXPECT_TRUE(graft.converged);
-  return CheckGraftFit(plan.mesh, graft.V, graft.wallDistanceMm, plan.measurements, plan.tree, diameters);
+  return CheckGraftFit(plan.mesh, graft.V, graft.wallDistanceMm, plan.measurements, plan.tree, diameters,
+                       FitCheckParams{}, &plan.vesselWall);
 }
 
 /// Mean of a per-vertex value over the trunk's first `rings` rings (the proximal neck).
@@ -45,9 +47,10 @@ double NeckMean(const StentMesh& mesh, const Eigen::VectorXd& values, int rings)
   return sum / (rings * mesh.verticesPerRing);
 }
 
+/// The phantom with a wall in fat (sizing is on the outer wall, which needs one to be seen).
 MeasuredPlan PlanFor(const PhantomParams& p, AorticPhantom& phantom)
 {
-  phantom = GenerateAorticPhantom(p);
+  phantom = GenerateAorticPhantom(testing::WithWallInFat(p));
   return testing::MeasureFromCt(*phantom.ct, phantom.truth.seedLps);
 }
 
@@ -175,8 +178,11 @@ TEST_F(DefaultPhantomGraft, CorrectlySized_OnTheWallInTheNeckAndSealing)
   EXPECT_GE(c.proximalSealLengthMm, phantom->truth.sizing.proximalNeckLength - 4.0);
   EXPECT_GE(c.rightIliacSealLengthMm, 10.0);
   EXPECT_GE(c.leftIliacSealLengthMm, 10.0);
-  // Over the measured (a), exactly (only rounding: both are one division of the same doubles).
-  EXPECT_NEAR(c.proximalOversizingPercent, 100.0 * (25.0 / plan->measurements.Value("proximalNeckDiameter") - 1.0),
+  // Over the measured (a), exactly (only rounding: both are one division of the same doubles):
+  // the lumen's, as this phantom has no fat to show an outer wall (lumen-only, like issue 6's).
+  EXPECT_TRUE(plan->vesselWall.Empty());
+  EXPECT_EQ(c.oversizingWall, "lumen");
+  EXPECT_NEAR(c.proximalOversizingPercent, 100.0 * (25.0 / plan->measurements.Value("proximalNeckLumenDiameter") - 1.0),
               1e-9);
   EXPECT_FALSE(c.migrationRisk);
   EXPECT_EQ(c.CoveredOstia(), "none");

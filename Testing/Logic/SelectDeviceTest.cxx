@@ -362,6 +362,27 @@ TEST(SelectDevice, OnlyIndeterminateFamilies_RecommendedButFlagged)
   EXPECT_EQ(s.reasons[0], "TenMm: neck length not measured, needs ≥ 10 mm (β ≤ 60°): indeterminate");
 }
 
+TEST(SelectDevice, NeckDiameterNotMeasured_NothingToImplantSoNoRecommendation)
+{
+  // (a) unknown (an outer wall that could not be seen): no family fails, none has a main body.
+  SizingAnatomy a = MakeGoodAnatomy();
+  a.proximalNeckDiameterMm = NaN;
+  const DeviceSelection s = SelectDevice(a, MakeTestCatalog());
+  EXPECT_LT(s.recommended, 0) << s.summary;
+  EXPECT_EQ(s.summary, "no device within IFU");
+  ASSERT_FALSE(s.reasons.empty());
+  EXPECT_NE(s.reasons[0].find("no main body sized"), std::string::npos) << s.reasons[0];
+  // Sized on the lumen instead (a catalogue that says so), the same anatomy has its device.
+  DeviceCatalog lumen = MakeTestCatalog();
+  for (DeviceFamily& f : lumen.families)
+    f.diameterReference = DiameterReference::Lumen;
+  a.proximalNeckLumenDiameterMm = 22.0;
+  a.neckLumenDiameter15mmMm = 22.0;
+  a.rightIliacLumenDiameterMm = a.rightIliacDiameterMm;
+  a.leftIliacLumenDiameterMm = a.leftIliacDiameterMm;
+  EXPECT_GE(SelectDevice(a, lumen).recommended, 0);
+}
+
 TEST(SelectDevice, ForcedFamilyAndSize_OnlyItEvaluatedAndFlaggedOutsideIfu)
 {
   SizingAnatomy a = MakeGoodAnatomy();

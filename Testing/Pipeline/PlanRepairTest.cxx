@@ -9,9 +9,11 @@
 
 #include "Common/Errors.h"
 #include "IO/ReadDeviceCatalog.h"
+#include "IO/ReadNeckRules.h"
 #include "Phantom/AorticPhantom.h"
 #include "Pipeline/PlanRepair.h"
 #include "Pipeline/PlanValues.h"
+#include "PhantomTestSupport.h"
 #include "PipelineSupport.h"
 
 namespace sgp
@@ -27,16 +29,28 @@ PlanParams DefaultParams()
 {
   PlanParams params;
   params.catalog = ReadDeviceCatalog(SGP_DEVICES_JSON);
+  params.neckRules = ReadNeckRules(SGP_NECK_RULES_JSON);
   return params;
 }
 
-/// The default phantom (0.8 × 0.8 × 1.0 mm, noise 20 HU, renal arteries), planned once for the suite.
+/// The default anatomy with a 1.5 mm wall in fat (0.8 × 0.8 × 1.0 mm, noise 20 HU, renal
+/// arteries): the plan sizes on the outer wall, which needs fat to be seen. Common iliacs 14 mm:
+/// with the wall, 12 mm ones leave external iliacs of 6 mm lumen, too narrow for any main body's
+/// 18–20 Fr sheath (the access checks fail, rightly).
+AorticPhantom WallPhantom()
+{
+  PhantomParams p = testing::WithWallInFat(PhantomParams{});
+  p.rightIliacDiameterMm = p.leftIliacDiameterMm = 14.0;
+  return GenerateAorticPhantom(p);
+}
+
+/// That phantom, planned once for the suite.
 class DefaultPhantomPlan : public ::testing::Test
 {
 protected:
   static void SetUpTestSuite()
   {
-    phantom = new AorticPhantom(GenerateAorticPhantom(PhantomParams{}));
+    phantom = new AorticPhantom(WallPhantom());
     PlanObserver observer;
     observer.begin = [](std::string_view name, std::string_view) { stages->emplace_back(name); };
     observer.warn = [](const std::string& w) { warned->push_back(w); };
@@ -67,6 +81,7 @@ TEST_F(DefaultPhantomPlan, SizingDiameters_WithinTheBarOfTheTruth)
   const Measurements& m = plan->measurements;
   const PhantomSizing& truth = phantom->truth.sizing;
   testing::ExpectDiametersNear(m, truth, diameterMm);
+  testing::ExpectOuterDiametersNear(m, truth, diameterMm);
 }
 
 TEST_F(DefaultPhantomPlan, ProximalSite_FromTheRenalBranches)
@@ -83,12 +98,16 @@ TEST_F(DefaultPhantomPlan, Recommendation_EqualsTheOneForTheTruthsSizing)
   // state, are the measured ones (the default phantom passes both checks by a wide margin).
   const PhantomSizing& truth = phantom->truth.sizing;
   SizingAnatomy anatomy = SizingFromMeasurements(plan->measurements);
-  anatomy.proximalNeckDiameterMm = truth.proximalNeckDiameter;
-  anatomy.neckDiameter15mmMm = truth.neckDiameter15mm;
+  anatomy.proximalNeckDiameterMm = truth.outerProximalNeckDiameter;
+  anatomy.neckDiameter15mmMm = truth.outerNeckDiameter15mm;
+  anatomy.rightIliacDiameterMm = truth.outerRightIliacDiameter;
+  anatomy.leftIliacDiameterMm = truth.outerLeftIliacDiameter;
+  anatomy.proximalNeckLumenDiameterMm = truth.proximalNeckDiameter;
+  anatomy.neckLumenDiameter15mmMm = truth.neckDiameter15mm;
+  anatomy.rightIliacLumenDiameterMm = truth.rightIliacDiameter;
+  anatomy.leftIliacLumenDiameterMm = truth.leftIliacDiameter;
   anatomy.proximalNeckLengthMm = truth.proximalNeckLength;
   anatomy.neckAngleBetaDeg = truth.neckAngleBetaDeg;
-  anatomy.rightIliacDiameterMm = truth.rightIliacDiameter;
-  anatomy.leftIliacDiameterMm = truth.leftIliacDiameter;
   anatomy.rightIliacSealLengthMm = truth.rightIliacLength;
   anatomy.leftIliacSealLengthMm = truth.leftIliacLength;
   anatomy.proximalSiteToBifurcationLengthMm = truth.proximalSiteToBifurcationLength;
@@ -116,8 +135,9 @@ TEST_F(DefaultPhantomPlan, Recommendation_EqualsTheOneForTheTruthsSizing)
 
 TEST_F(DefaultPhantomPlan, Stages_BegunInTheDocumentedOrder)
 {
-  const std::vector<std::string> expected = { "SegmentLumen",   "ThinLumen",    "ExtractCenterlines", "FitStent",
-                                              "MeasureAnatomy", "SelectDevice", "SimulateGraft" };
+  const std::vector<std::string> expected = { "SegmentLumen", "ThinLumen",        "ExtractCenterlines",
+                                              "FitStent",     "SegmentOuterWall", "MeasureAnatomy",
+                                              "SelectDevice", "SimulateGraft" };
   EXPECT_EQ(*stages, expected);
   EXPECT_EQ(*warned, plan->warnings); // every warning reaches the observer and stays in the plan
 }
@@ -130,8 +150,9 @@ TEST_F(DefaultPhantomPlan, ReturnValues_EveryNameOnceInOrderAndMeasured)
   {
     SCOPED_TRACE(values[i].name);
     EXPECT_EQ(values[i].name, ReturnValueNames()[i]);
-    // The default phantom has every value: its scan reaches 30 mm above the site (α), both
-    // external iliacs (access), the internal iliacs (lengths), and a graft is simulated.
+    // The phantom has every value: its scan reaches 30 mm above the site (α), both external
+    // iliacs (access), the internal iliacs (lengths), its wall lies in fat (the outer-wall
+    // values), the neck rules are decided, and a graft is simulated.
     EXPECT_TRUE(values[i].measured) << values[i].text;
   }
 }
@@ -187,7 +208,7 @@ TEST(PlanRepair, HandedOverCt_FreedOnceTheLumenIsSegmented)
 TEST(PlanRepair, NoGraftToSimulate_ValuesUnmeasuredOrAnErrorWhenTheGraftWasAskedFor)
 {
   // An oversizing range no catalogue size reaches (95–100 %): no main body for any family.
-  const AorticPhantom phantom = GenerateAorticPhantom(PhantomParams{});
+  const AorticPhantom phantom = WallPhantom();
   PlanParams params = DefaultParams();
   params.selection.proximalOversizingMinPercent = 95.0;
   params.selection.proximalOversizingMaxPercent = 100.0;

@@ -13,7 +13,9 @@ Usage: check_cli_contract.py MODULE_DIR StentGraftSimulation.xml SyntheticAortic
   reads the CLI's "not measured" text (-1, none) as missing exactly where the XML's description
   leaves no other reading: -1 where the description says "-1 when ..." or the quantity cannot be
   negative (in mm, in degrees, a tortuosity ratio), not where it is signed (in percent, in HU);
-  "none" where the description does not offer none as a value; and its display unit is the XML's;
+  "none" where the description does not offer none as a value; its display unit is the XML's; a
+  diameter is labelled with the wall its description names (outer wall, lumen, or neither for a
+  device size); an XML <boolean> is read as a verdict, with no "not measured" text;
 - the module's dependencies name none of the extension's CLIs (Slicer's generic module tests run
   with --disable-cli-modules, and a module whose dependency is not loaded is not loaded at all);
 - every parameter StentGraftPlannerTest passes to SyntheticAorticPhantom, and its seedRas return,
@@ -57,7 +59,7 @@ def xmlParameters(path):
 def sentParameterProblems(Settings, declared):
     """Problems of the dictionary the module builds with every optional input given."""
     nodes = {role.name: role for role in Settings.NODE_ROLES}
-    settings = dict(Settings.defaultSettings(), deviceCatalogPath="/x/devices.json")
+    settings = dict(Settings.defaultSettings(), deviceCatalogPath="/x/devices.json", neckRulesPath="/x/rules.json")
     sent = Settings.buildCliParameters(settings, nodes, {"seed": 1, "lowestRenalOstium": 1}, "/x/report.json")
     problems = []
     for name, value in sent.items():
@@ -81,7 +83,7 @@ def sentParameterProblems(Settings, declared):
                     problems.append("%s must have type=\"%s\" for a %s" % (name, wantType, value.nodeClass))
             if (parameter["channel"] or "input") != value.channel:
                 problems.append("%s has channel %s, the module treats it as %s" % (name, parameter["channel"], value.channel))
-        elif name in ("outputReport", "deviceCatalog"):
+        elif name == "outputReport" or name in dict(Settings.FILE_PARAMETERS):
             channel = "output" if name == "outputReport" else "input"
             if tag != "file" or parameter["channel"] != channel:
                 problems.append("%s must be a <file> with channel %s (a path passed unchanged)" % (name, channel))
@@ -125,6 +127,8 @@ SIGNED_PHRASES = (("in percent", "%"), ("in HU", "HU"))
 def expectedMissing(parameter):
     """(missing text, unit or None, problem or None) that the XML description implies for a return value."""
     description = parameter["description"]
+    if parameter["tag"] == "boolean":
+        return None, None, None  # true or false; an unreadable text is "not determined", not a value
     if parameter["tag"] == "string":
         # "none" is a value where the description offers it ("... or none when ..."), else "not had".
         return (None if re.search(r"\bnone\b", description) else "none"), None, None
@@ -142,6 +146,19 @@ def expectedMissing(parameter):
                         "or give the unit, or extend NON_NEGATIVE_PHRASES/SIGNED_PHRASES" % description)
 
 
+def expectedWall(name, parameter):
+    """The wall a return value's description names: Results.OUTER_WALL for an outer-wall diameter,
+    Results.LUMEN for a lumen diameter, "" for anything else (lengths, volumes, device sizes)."""
+    description = parameter["description"]
+    if "Diameter" not in name:
+        return ""
+    if re.search(r"outer[- ]wall", description):
+        return "outer"
+    if "lumen diameter" in description:
+        return "lumen"
+    return ""
+
+
 def returnValueProblems(Results, declared, returnValues=None):
     problems = []
     for item in Results.RETURN_VALUES if returnValues is None else returnValues:
@@ -150,7 +167,7 @@ def returnValueProblems(Results, declared, returnValues=None):
             problems.append("the module reads the return parameter %s, which the XML does not declare as one "
                             "(channel output, no flag, longflag or index)" % item.name)
             continue
-        wanted = ("string",) if item.kind == "str" else ("float", "double")
+        wanted = {"str": ("string",), "bool": ("boolean",)}.get(item.kind, ("float", "double"))
         if parameter["tag"] not in wanted:
             problems.append("return parameter %s is a <%s>, expected %s" % (item.name, parameter["tag"], " or ".join(wanted)))
             continue
@@ -162,6 +179,10 @@ def returnValueProblems(Results, declared, returnValues=None):
                             % (item.name, _missingText(item.missing), _missingText(missing), parameter["description"]))
         if unit is not None and item.unit != unit:
             problems.append("%s: the module shows it in %r, the XML gives %r" % (item.name, item.unit, unit))
+        wall = expectedWall(item.name, parameter)
+        if item.wall != wall:
+            problems.append("%s: the module labels it with the wall %r, the XML description names %r (%r)"
+                            % (item.name, item.wall, wall, parameter["description"]))
     return problems
 
 
@@ -170,7 +191,8 @@ def _missingText(missing):
 
 
 def computedValueProblems(Results):
-    """A computed value's operands are read values that can be missing themselves."""
+    """A computed value's operands, and a verdict's quantities, are read values that can be missing
+    themselves."""
     names = {item.name: item for item in Results.RETURN_VALUES}
     problems = []
     for name, operands in Results.COMPUTED_FROM.items():
@@ -179,6 +201,12 @@ def computedValueProblems(Results):
                 problems.append("COMPUTED_FROM names %s, which the module does not read" % operand)
         if name in names and names[name].missing is not None:
             problems.append("%s reads -1 as missing already; COMPUTED_FROM is for signed values" % name)
+    for name, quantities in Results.DECIDED_FROM.items():
+        for quantity in (name,) + tuple(quantities):
+            if quantity not in names:
+                problems.append("DECIDED_FROM names %s, which the module does not read" % quantity)
+        if name in names and names[name].kind != "bool":
+            problems.append("DECIDED_FROM is for verdicts (XML <boolean>); %s is a %s" % (name, names[name].kind))
     return problems
 
 
@@ -251,10 +279,21 @@ def main(moduleDir, simulationXml, phantomXml):
         "a diameter read -1 as a value": byName["rightIliacDiameter"]._replace(missing=None),
         "an angle documented '-1 when' read -1 as a value": byName["neckAngleAlpha"]._replace(missing=None),
         "a device 'none' read as missing": byName["recommendedDevice"]._replace(missing="none"),
+        "an outer-wall diameter labelled lumen": byName["proximalNeckDiameter"]._replace(wall="lumen"),
+        "a lumen diameter labelled outer wall": byName["leftIliacLumenDiameter"]._replace(wall="outer"),
+        "a device size labelled outer wall": byName["mainBodyDiameter"]._replace(wall="outer"),
+        "the hostile-neck verdict read as a number": byName["hostileNeck"]._replace(kind="float", missing="-1"),
     }
     for what, item in plantedValues.items():
         checks.append(("planted defect, %s, is rejected" % what,
                        [] if returnValueProblems(Results, declared, [item]) else ["not rejected"]))
+    decided = Results.DECIDED_FROM
+    Results.DECIDED_FROM = dict(decided, hostileNeck=decided["hostileNeck"] + ("neckThrombusArcPercent",))
+    try:
+        checks.append(("planted defect, a verdict decided on a value not read, is rejected",
+                       [] if computedValueProblems(Results) else ["not rejected"]))
+    finally:
+        Results.DECIDED_FROM = decided
     checks.append(("planted defect, the CLI in the dependencies, is rejected",
                    [] if dependencyProblems(moduleSource.replace("dependencies = []", 'dependencies = ["StentGraftSimulation"]'),
                                             cliNames) else ["not rejected"]))

@@ -42,7 +42,10 @@ class ReturnValuesTest(unittest.TestCase):
             if item.name != "recommendedDevice":
                 self.assertIsNone(values[item.name], item.name)
         lines = Results.measurementSummaryLines(values)
-        self.assertIn("(e) right iliac diameter: not measured", lines)
+        self.assertIn("(e) right iliac diameter, outer wall: not measured", lines)
+        self.assertIn("(e) right iliac diameter, lumen: not measured", lines)
+        self.assertIn("thrombus volume, proximal site to bifurcation: not measured", lines)
+        self.assertIn("hostile neck: not determined", lines)
         self.assertFalse([line for line in lines if "-1" in line], lines)
 
     def test_NotMeasured_CoversEveryNonNegativeQuantity(self):
@@ -71,9 +74,206 @@ class ReturnValuesTest(unittest.TestCase):
         self.assertEqual(Results.formatValue(22.25, "mm"), "22.2 mm")
         self.assertEqual(Results.formatValue(None, "mm"), "not measured")
         self.assertEqual(Results.formatValue(1.234, ""), "1.23")
-        lines = Results.measurementSummaryLines({"proximalNeckDiameter": 22.0})
-        self.assertEqual(lines[0], "(a) proximal neck diameter: 22.0 mm")
+        self.assertEqual(Results.formatValue(61.54, "mL"), "61.5 mL")
+        self.assertEqual(Results.formatValue(True, ""), "Yes")
+        self.assertEqual(Results.formatValue(False, ""), "No")
+        lines = Results.measurementSummaryLines({"proximalNeckDiameter": 25.0, "proximalNeckLumenDiameter": 22.0})
+        self.assertEqual(lines[:2], ["(a) proximal neck diameter, outer wall: 25.0 mm",
+                                     "(a) proximal neck diameter, lumen: 22.0 mm"])
         self.assertEqual(len(lines), len(Results.RETURN_VALUES))
+
+
+class WallTest(unittest.TestCase):
+    """Issue 12 items 3 and 6: (a)-(f) outer wall to outer wall under their old names, the lumen values
+    beside them, each labelled with its wall; the thrombus values; -1 read as not measured."""
+
+    def test_EachLevel_HasAnOuterAndALumenDiameter_InThatOrder(self):
+        byName = {item.name: item for item in Results.RETURN_VALUES}
+        names = [item.name for item in Results.RETURN_VALUES]
+        self.assertEqual(len(Results.DIAMETER_PAIRS), 6)
+        for outer, lumen, label in Results.DIAMETER_PAIRS:
+            self.assertEqual((byName[outer].wall, byName[lumen].wall), (Results.OUTER_WALL, Results.LUMEN))
+            self.assertEqual(byName[outer].label, byName[lumen].label)  # one level, told apart by the wall
+            self.assertEqual(names.index(lumen), names.index(outer) + 1)
+            self.assertIn("Lumen", lumen)
+        self.assertEqual(byName["rightAccessMinDiameter"].wall, Results.LUMEN)  # inscribed lumen diameter
+        for name in ("proximalNeckLength", "thrombusVolume", "neckThrombusArc", "hostileNeck", "mainBodyDiameter"):
+            self.assertEqual(byName[name].wall, "", name)  # not a diameter of a wall
+
+    def test_OuterAndLumenValues_AreReadUnderTheirNames(self):
+        given = {"proximalNeckDiameter": "25.1", "proximalNeckLumenDiameter": "22.05", "maxAneurysmDiameter": "62",
+                 "maxAneurysmLumenDiameter": "34.5"}
+        values = Results.readReturnValues(lambda name: given.get(name, ""))
+        self.assertEqual((values["proximalNeckDiameter"], values["proximalNeckLumenDiameter"]), (25.1, 22.05))
+        self.assertEqual((values["maxAneurysmDiameter"], values["maxAneurysmLumenDiameter"]), (62.0, 34.5))
+
+    def test_NewValues_MinusOneIsNotMeasured(self):
+        names = ("thrombusVolume", "sacVolume", "maxThrombusThickness", "neckThrombusArc", "neckCalcificationArc") + tuple(
+            name for pair in Results.DIAMETER_PAIRS for name in pair[:2])
+        values = Results.readReturnValues(lambda name: "-1")
+        for name in names:
+            self.assertIn(name, Results.NOT_MEASURED_NAMES, name)
+            self.assertIsNone(values[name], name)
+        rows = {row[0] + row[2]: row[1] for row in Results.resultsTableRows(values)}
+        self.assertEqual(rows["thrombus volume, proximal site to bifurcation"], "not measured")
+        self.assertEqual(rows["(c) maximum aneurysm diameterouter wall"], "not measured")
+        self.assertEqual(rows["(c) maximum aneurysm diameterlumen"], "not measured")
+
+    def test_NewValues_AreShownWithTheirUnits(self):
+        given = {"thrombusVolume": "61.54", "sacVolume": "140", "maxThrombusThickness": "14.2", "neckThrombusArc": "0",
+                 "neckCalcificationArc": "37.5"}
+        values = Results.readReturnValues(lambda name: given.get(name, ""))
+        self.assertEqual(values["neckThrombusArc"], 0.0)  # no thrombus thicker than 2 mm: a value, not a gap
+        shown = {row[0]: row[1] for row in Results.resultsTableRows(values)}
+        self.assertEqual(shown["thrombus volume, proximal site to bifurcation"], "61.5 mL")
+        self.assertEqual(shown["sac volume inside the outer wall"], "140.0 mL")
+        self.assertEqual(shown["maximum thrombus thickness"], "14.2 mm")
+        self.assertEqual(shown["neck thrombus arc (thicker than 2 mm)"], "0.0 %")
+        self.assertEqual(shown["neck calcification arc"], "37.5 %")
+
+
+class HostileNeckTest(unittest.TestCase):
+    """hostileNeck is an XML <boolean>: Yes, No, or not determined where the CLI's false may stand for
+    an undecided rule (a quantity the rules need was not measured) or it wrote nothing readable."""
+
+    MEASURED = {"proximalNeckLength": "24", "proximalNeckDiameter": "25", "neckDiameter15mm": "26",
+                "neckAngleBeta": "35", "neckAngleAlpha": "20", "neckThrombusArc": "10", "neckCalcificationArc": "5"}
+
+    def shown(self, **given):
+        texts = dict(self.MEASURED, **given)
+        values = Results.readReturnValues(lambda name: texts.get(name, ""))
+        row = [row for row in Results.resultsTableRows(values) if row[0] == "hostile neck"]
+        self.assertEqual(len(row), 1)
+        return values["hostileNeck"], row[0][1]
+
+    def test_TrueAndFalse_AreYesAndNo(self):
+        self.assertEqual(self.shown(hostileNeck="true"), (True, "Yes"))
+        self.assertEqual(self.shown(hostileNeck="false"), (False, "No"))
+        self.assertEqual(self.shown(hostileNeck=" TRUE "), (True, "Yes"))
+
+    def test_EmptyOrUnreadable_IsNotDetermined(self):
+        for text in ("", "maybe", "-1", "none"):
+            self.assertEqual(self.shown(hostileNeck=text), (None, "not determined"), text)
+
+    def test_FalseWithAQuantityNotMeasured_IsNotDetermined(self):
+        # The XML: false "when a rule could not be decided"; alpha is -1 when the scan starts too low.
+        for quantity in Results.DECIDED_FROM["hostileNeck"]:
+            self.assertEqual(self.shown(hostileNeck="false", **{quantity: "-1"}), (None, "not determined"), quantity)
+
+    def test_TrueWithAQuantityNotMeasured_StaysYes(self):
+        # One failed rule makes the neck hostile, whatever the undecided ones would give.
+        self.assertEqual(self.shown(hostileNeck="true", neckAngleAlpha="-1", neckThrombusArc="-1"), (True, "Yes"))
+
+    def test_ReportAssessment_TellsNoFromNotDetermined(self):
+        # The CLI writes false for an undecided rule even when every quantity was measured (a neck
+        # length within its uncertainty of the threshold); the report's assessment says which.
+        values = Results.readReturnValues(lambda name: dict(self.MEASURED, hostileNeck="false").get(name, ""))
+        self.assertIs(values["hostileNeck"], False)
+        for section, expected in (({"hostile": False, "determinate": False}, None),
+                                  ({"hostile": False, "determinate": True}, False),
+                                  ({"hostile": True, "determinate": False}, True),
+                                  ({"summary": "no booleans"}, False), (None, False)):
+            report = {"hostileNeck": section}
+            decided = Results.withReportVerdicts(values, report)
+            self.assertIs(decided["hostileNeck"], expected, section)
+            self.assertIs(values["hostileNeck"], False)  # a new dict: the read values stay as read
+        undecided = Results.withReportVerdicts(values, {"hostileNeck": {"hostile": False, "determinate": False}})
+        self.assertIn(("hostile neck", "not determined", "", ""), Results.resultsTableRows(undecided))
+
+    def test_ReportAssessment_ListsFailedAndUndecidedRules(self):
+        report = Results.parseReport(
+            '{"format": "StentGraftPlanner.report/1", "hostileNeck": {"hostile": true, "determinate": false, '
+            '"summary": "hostile neck: fails short-neck (1 of 3 rules of \'default\'); indeterminate: alpha", "checks": ['
+            '{"name": "short-neck", "status": "fail", "text": "neck length 12.0 mm, needs >= 15 mm: -3.0 mm"}, '
+            '{"name": "alpha", "status": "indeterminate", "text": "neck angle alpha not measured"}, '
+            '{"name": "wide-neck", "status": "pass", "text": "neck diameter 25.0 mm, needs <= 28 mm: +3.0 mm"}]}}')
+        lines = Results.recommendationLines(report)
+        self.assertEqual(lines, [
+            ("heading", "Hostile-neck rules"),
+            ("fail", "hostile neck: fails short-neck (1 of 3 rules of 'default'); indeterminate: alpha"),
+            ("fail", "neck length 12.0 mm, needs >= 15 mm: -3.0 mm"),
+            ("indeterminate", "neck angle alpha not measured"),
+        ])  # passes are counted in the summary only, as the families' checks
+        for section, kind in (({"hostile": False, "determinate": True}, "ok"),
+                              ({"hostile": False, "determinate": False}, "indeterminate"), ({}, "indeterminate")):
+            lines = Results.recommendationLines({"hostileNeck": dict(section, summary="s")})
+            self.assertEqual(lines, [("heading", "Hostile-neck rules"), (kind, "s")], section)
+
+    def test_HostileNeck_IsNotAWallValue(self):
+        rows = Results.resultsTableRows({"hostileNeck": False})
+        self.assertEqual([row for row in rows if row[0] == "hostile neck"], [("hostile neck", "No", "", "")])
+
+
+class ResultsTableTest(unittest.TestCase):
+    """The panel's table: every return value with its wall, and the estimated flag of the CLI's
+    measurements table (column estimated: true where an outer diameter sits at a level less than
+    60 % supported)."""
+
+    def rows(self):
+        return Results.readCsvRows(read("measurements-wall.csv"))
+
+    def test_EstimatedNames_FromTheCsv(self):
+        # neckDiameter15mm: true; maxAneurysmDiameter: TRUE (any case); its lumen row "true" too (the
+        # CLI's to mark); rightIliacDiameter: true though not measured; false and empty are not.
+        self.assertEqual(Results.estimatedNames(self.rows()),
+                         {"neckDiameter15mm", "maxAneurysmDiameter", "maxAneurysmLumenDiameter", "rightIliacDiameter"})
+
+    def test_UnknownName_MarksNothing(self):
+        rows = [{"name": "noSuchValue", "wall": "outer", "estimated": "true"},
+                {"name": "leftIliacDiameter", "wall": "outer", "estimated": "yes"},
+                {"name": "", "estimated": "true"}, {"estimated": "true"}]
+        self.assertEqual(Results.estimatedNames(rows), {"leftIliacDiameter"})
+        self.assertEqual(Results.tableWalls(rows), {"leftIliacDiameter": "outer"})
+
+    def test_TheTablesWall_IsShownWhereItGivesOne(self):
+        # The neck length is measured on the outer wall where it was traced, on the lumen where not:
+        # only the CLI's row says which. Empty or unknown texts keep the module's own label.
+        rows = self.rows() + [{"name": "neckConicity", "wall": "Lumen"}, {"name": "neckAngleBeta", "wall": "both"}]
+        self.assertNotIn("proximalNeckLength", Results.tableWalls(rows))  # the sample's row leaves it empty
+        rows.append({"name": "proximalNeckLength", "wall": "outer"})
+        walls = Results.tableWalls(rows)
+        self.assertEqual((walls["proximalNeckLength"], walls["neckConicity"]), ("outer", "lumen"))
+        self.assertNotIn("neckAngleBeta", walls)
+        self.assertEqual(walls["maxAneurysmLumenDiameter"], "lumen")
+        shown = {row[0]: row[2] for row in Results.resultsTableRows({}, rows)}
+        self.assertEqual(shown["proximal neck length"], "outer wall")
+        self.assertEqual(shown["neck conicity"], "lumen")
+        self.assertEqual(shown["infrarenal neck angle beta"], "")
+        self.assertEqual(shown["thrombus volume, proximal site to bifurcation"], "")  # the sample's row: no wall
+
+    def test_TableWithoutTheNewColumns_MarksNothing(self):
+        # A measurements table of a CLI from before issue 12.
+        rows = [{"name": "proximalNeckDiameter", "value": "22.3", "unit": "mm"}]
+        self.assertEqual(Results.estimatedNames(rows), set())
+        self.assertEqual(Results.estimatedNames([]), set())
+
+    def test_Rows_LabelWallValueAndEstimated(self):
+        given = {"proximalNeckDiameter": "25.1", "proximalNeckLumenDiameter": "22.04", "neckDiameter15mm": "26.4",
+                 "neckLumenDiameter15mm": "20.2", "maxAneurysmDiameter": "62", "maxAneurysmLumenDiameter": "34.5",
+                 "rightIliacDiameter": "-1", "thrombusVolume": "61.5", "hostileNeck": "true"}
+        values = Results.readReturnValues(lambda name: given.get(name, ""))
+        rows = Results.resultsTableRows(values, self.rows())
+        self.assertEqual(len(rows), len(Results.RETURN_VALUES))
+        self.assertTrue(all(len(row) == len(Results.RESULTS_COLUMNS) for row in rows))
+        self.assertEqual(rows[:6], [
+            ("(a) proximal neck diameter", "25.1 mm", "outer wall", ""),
+            ("(a) proximal neck diameter", "22.0 mm", "lumen", ""),
+            ("(b) neck diameter 15 mm below", "26.4 mm", "outer wall", "yes"),
+            ("(b) neck diameter 15 mm below", "20.2 mm", "lumen", ""),
+            ("(c) maximum aneurysm diameter", "62.0 mm", "outer wall", "yes"),
+            ("(c) maximum aneurysm diameter", "34.5 mm", "lumen", "yes"),
+        ])
+        byLabelAndWall = {(row[0], row[2]): row for row in rows}
+        # Not measured: no estimated flag on a value that is not there.
+        self.assertEqual(byLabelAndWall[("(e) right iliac diameter", "outer wall")][1:], ("not measured", "outer wall", ""))
+        self.assertEqual(byLabelAndWall[("thrombus volume, proximal site to bifurcation", "")][1:], ("61.5 mL", "", ""))
+        self.assertEqual(byLabelAndWall[("hostile neck", "")][1], "Yes")
+
+    def test_SummaryLines_CarryWallAndEstimated(self):
+        values = Results.readReturnValues(lambda name: {"neckDiameter15mm": "26.4"}.get(name, ""))
+        lines = Results.measurementSummaryLines(values, self.rows())
+        self.assertIn("(b) neck diameter 15 mm below, outer wall: 26.4 mm (estimated)", lines)
+        self.assertIn("(b) neck diameter 15 mm below, lumen: not measured", lines)
 
 
 class ProfileTest(unittest.TestCase):
@@ -109,7 +309,7 @@ class ReportTest(unittest.TestCase):
     def test_MinimalReport_HasEmptySections(self):
         report = Results.parseReport(read("report-minimal.json"))
         self.assertEqual(report, {"proximalSite": None, "measurements": [], "warnings": [], "recommendation": None,
-                                  "families": [], "fitCheck": None})
+                                  "families": [], "fitCheck": None, "hostileNeck": None})
         self.assertEqual(Results.recommendationLines(report), [])
         self.assertEqual(Results.recommendationHtml(report), "The report holds no device recommendation.")
 

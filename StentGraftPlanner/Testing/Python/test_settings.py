@@ -144,6 +144,7 @@ class BuildCliParametersTest(unittest.TestCase):
         self.assertEqual(parameters["proximalOversizingRange"], "10,20")  # pre-joined: no ", " from slicer.cli
         self.assertEqual(parameters["outputReport"], "/tmp/report.json")
         self.assertNotIn("deviceCatalog", parameters)  # the CLI's default: the bundled catalogue
+        self.assertNotIn("neckRules", parameters)  # the CLI's default: the bundled hostile-neck rules
 
     def test_FloatSettings_KeepMoreThanSixSignificantDigits(self):
         # Issue 14 item 7: SetParameterAsDouble would send 0.00123457 and 1.23457e+06.
@@ -170,6 +171,40 @@ class BuildCliParametersTest(unittest.TestCase):
         self.assertEqual(parameters["device"], "Excluder:28.5")
         self.assertEqual(parameters["proximalOversizingRange"], "12.5,25")
         self.assertEqual(parameters["deviceCatalog"], "/data/devices.json")
+
+    def test_NeckRulesFile_IsSentOnlyWhenChosen(self):
+        # Issue 12 item 4: the rule set is replaceable with --neckRules, like the device catalogue.
+        settings = dict(Settings.defaultSettings(), neckRulesPath="/data/my rules.json")
+        parameters = self.build(settings)
+        self.assertEqual(parameters["neckRules"], "/data/my rules.json")  # unchanged: a path, spaces and all
+        self.assertNotIn("deviceCatalog", parameters)
+        self.assertEqual(Settings.SETTINGS_BY_NAME["neckRulesPath"].default, "")
+        self.assertFalse(Settings.SETTINGS_BY_NAME["neckRulesPath"].cli)  # combined, not sent as itself
+        self.assertNotIn("neckRulesPath", parameters)
+
+    def test_NeckRulesPath_SurvivesTheParameterNode(self):
+        settings = dict(Settings.defaultSettings(), neckRulesPath="/tmp/rules.json")
+        back, problems = Settings.settingsFromStrings(Settings.settingsToStrings(settings))
+        self.assertEqual(back["neckRulesPath"], "/tmp/rules.json")
+        self.assertEqual(problems, [])
+
+    def test_WallOutputs_AreNewNodesPassedToTheCli(self):
+        # Issue 12 item 6: the wall label map and the outer-wall surface, created like the other outputs.
+        roles = Settings.NODE_ROLES_BY_NAME
+        self.assertEqual((roles["outputWallLabelMap"].nodeClass, roles["outputWallLabelMap"].channel),
+                         ("vtkMRMLLabelMapVolumeNode", "output"))
+        self.assertEqual((roles["outputOuterWallModel"].nodeClass, roles["outputOuterWallModel"].channel),
+                         ("vtkMRMLModelNode", "output"))
+        for name in ("outputWallLabelMap", "outputOuterWallModel"):
+            self.assertIn(roles[name], Settings.OUTPUT_ROLES)
+            self.assertTrue(roles[name].defaultName, name)
+        nodes = allNodes()
+        parameters = self.build(nodes=nodes)
+        self.assertIs(parameters["outputWallLabelMap"], nodes["outputWallLabelMap"])
+        self.assertIs(parameters["outputOuterWallModel"], nodes["outputOuterWallModel"])
+        for name in ("outputWallLabelMap", "outputOuterWallModel"):
+            with self.assertRaisesRegex(ValueError, name):
+                self.build(nodes=dict(allNodes(), **{name: None}))
 
     def test_RenalLandmarkWithoutPoints_IsLeftOut(self):
         for nodes, counts in ((allNodes(), {"seed": 1, "lowestRenalOstium": 0}),
