@@ -43,6 +43,8 @@ def main():
     targets = {"BM_GrowLumenRegion": ("Segmentation, 512x512x400 in memory", 2.0),
                "BM_ThinAndBuildGraph": ("Thinning + skeleton graph of that lumen", 1.0),
                "BM_LabelAortoIliacTree": ("Labelling the Y, smoothing the centerlines", None),
+               "BM_WallStage": ("Wall stage (CT crop, outer wall of aorta and iliacs, two passes), 512x512x400 "
+                                "with a wall and thrombus", 1.0),
                "BM_FactorizeSparseLDLT/624/": ("ACM: sparse LDLT of I + tau K, 624 vertices", 0.010),
                "BM_FactorizeSparseLDLT/10000/": ("ACM: sparse LDLT, 10,000 vertices", None),
                "BM_FactorizeSparseLDLT/50000/": ("ACM: sparse LDLT, 50,000 vertices", None),

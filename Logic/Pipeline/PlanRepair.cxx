@@ -1,6 +1,8 @@
 #include "Pipeline/PlanRepair.h"
 
 #include <algorithm>
+#include <functional>
+#include <future>
 #include <utility>
 
 #include "Centerlines/AssignInscribedRadii.h"
@@ -77,12 +79,14 @@ void ExtractCenterlines(const PlanParams& params, const StageReporter& report, R
 WallDistanceField FitStentSurface(const PlanRequest& request,
                                   const PlanParams& params,
                                   const StageReporter& report,
-                                  RepairPlan& plan)
+                                  RepairPlan& plan,
+                                  const std::function<void()>& siteFound)
 {
   report.Begin("FitStent", "Fitting the bifurcated stent surface (active contour)");
   plan.site = FindProximalSite(plan.centerlines, request.lowestRenalOstiumLps);
   if (!plan.site.warning.empty())
     report.Warn(plan.site.warning);
+  siteFound();
   StentMeshParams meshParams = params.mesh;
   if (meshParams.proximalAbscissaMm < 0.0)
     meshParams.proximalAbscissaMm = plan.site.abscissaMm;
@@ -105,26 +109,39 @@ WallDistanceField FitStentSurface(const PlanRequest& request,
 }
 
 /// The outer wall, thrombus and calcium of the aorta and both common iliacs, from the CT crop.
-void TraceWall(const CtImage& ct,
-               const PlanRequest& request,
-               const PlanParams& params,
-               const StageReporter& report,
-               RepairPlan& plan)
+/// The wall stage's results, computed off the plan (on the second core while the stent surface is
+/// fitted): it reads the CT crop, the lumen, the centerlines and the site, none of which the fit
+/// changes.
+struct TracedWall
 {
-  report.Begin("SegmentOuterWall", "Tracing the outer wall, the thrombus and the calcium");
+  VesselWall wall;
+  LabelImage::Pointer labels;
+};
+
+TracedWall TraceWall(const CtImage& ct, const PlanRequest& request, const PlanParams& params, const RepairPlan& plan)
+{
   VesselWallParams wallParams = params.wall;
   // Nothing outside the lumen above its window is blood (VesselWall.h).
   wallParams.calciumHu = std::min(plan.lumen.calciumHu, params.wall.calciumHu);
-  plan.vesselWall = TraceVesselWall(ct, *plan.lumen.mask, plan.centerlines, plan.site.abscissaMm, wallParams);
+  TracedWall traced;
+  traced.wall = TraceVesselWall(ct, *plan.lumen.mask, plan.centerlines, plan.site.abscissaMm, wallParams);
+  if (request.wallLabelMap)
+    traced.labels = WallLabelMap(traced.wall, *plan.lumen.mask, ct);
+  return traced;
+}
+
+/// Takes the traced wall into the plan, with its warnings.
+void ReportWall(TracedWall traced, const PlanParams& params, const StageReporter& report, RepairPlan& plan)
+{
+  report.Begin("SegmentOuterWall", "Tracing the outer wall, the thrombus and the calcium");
+  plan.vesselWall = std::move(traced.wall);
+  plan.wallLabels = traced.labels;
   if (plan.vesselWall.Empty())
     report.Warn("No outer wall was found around the lumen (no fat outside the vessel in any plane?): the "
                 "outer-wall diameters, the thrombus values and the sizing on them are not measured.");
   else if (!plan.vesselWall.wallThicknessEstimated && params.wall.wallThicknessMm < 0.0)
     report.Warn("The wall thickness could not be measured above the neck; the thrombus is measured with a wall of " +
                 FormatNumber(plan.vesselWall.wallThicknessMm) + " mm.");
-  report.Progress(0.8);
-  if (request.wallLabelMap)
-    plan.wallLabels = WallLabelMap(plan.vesselWall, *plan.lumen.mask, ct);
 }
 
 void Measure(const WallDistanceField& wall, const PlanParams& params, const StageReporter& report, RepairPlan& plan)
@@ -262,12 +279,20 @@ RepairPlan PlanRepair(CtImage::ConstPointer ct,
   if (request.through < PlanStage::StentSurface)
     return plan;
 
-  const WallDistanceField wall = FitStentSurface(request, params, report, plan);
+  // The wall stage needs the site, not the fit: it runs on the second core while the stent
+  // surface is fitted (declared after `around` and `plan`, so it is waited for before either goes).
+  std::future<TracedWall> traced;
+  const auto startWall = [&]
+  {
+    if (around)
+      traced = std::async(std::launch::async, [&] { return TraceWall(*around, request, params, plan); });
+  };
+  const WallDistanceField wall = FitStentSurface(request, params, report, plan, startWall);
   plan.reached = PlanStage::StentSurface;
   if (request.through < PlanStage::Measurements)
     return plan;
 
-  TraceWall(*around, request, params, report, plan);
+  ReportWall(traced.get(), params, report, plan);
   around = nullptr;
   Measure(wall, params, report, plan);
   plan.reached = PlanStage::Measurements;

@@ -14,6 +14,9 @@
 /// ExtractCenterlines, FitStent, SegmentOuterWall, MeasureAnatomy, SelectDevice, SimulateGraft (the
 /// last only when a family has all three sizes).
 ///
+/// The wall stage runs on a second thread while the stent surface is fitted (it needs the site,
+/// not the fit); its stage is begun, and its warnings reported, after the fit.
+///
 /// The simulated graft expands against the lumen (it presses on the thrombus, not through it);
 /// sizing uses the diameters each family's IFU names (outer wall for the shipped catalogue).
 ///
