@@ -3,7 +3,6 @@
 // convert the seed once, PlanRepair (Logic/Pipeline) with Slicer progress, write every output at
 // once, print the summary. No stage logic lives here.
 #include <cstdlib>
-#include <filesystem>
 #include <future>
 #include <iostream>
 
@@ -14,6 +13,7 @@
 #include "IO/ReadCtImage.h"
 #include "IO/ReadDeviceCatalog.h"
 #include "IO/ReadNeckRules.h"
+#include "IO/ResourcePath.h"
 #include "IO/WriteImage.h"
 #include "IO/WritePlanOutputs.h"
 #include "Pipeline/PlanRepair.h"
@@ -22,22 +22,6 @@
 #include "SlicerProgress.h"
 #include "StentGraftSimulationCLP.h"
 #include "StentGraftSimulationParameters.h"
-
-namespace
-{
-
-/// The device catalogue installed beside the executable (CMake copies Resources/devices.json
-/// there, in the build tree and on install).
-std::string DefaultDeviceCatalog(const char* argv0)
-{
-  std::error_code error;
-  std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (error)
-    exe = std::filesystem::absolute(argv0, error);
-  return (exe.parent_path() / "devices.json").string();
-}
-
-} // namespace
 
 int main(int argc, char* argv[])
 {
@@ -87,7 +71,8 @@ int main(int argc, char* argv[])
     if (!lowestRenalOstium.empty())
       request.lowestRenalOstiumLps = RasToLps(lowestRenalOstium);
     // The catalogue is read before any heavy work: a broken catalogue or unknown --device fails at once.
-    const PlanRunInfo run{ inputVolume, deviceCatalog.empty() ? DefaultDeviceCatalog(argv[0]) : deviceCatalog,
+    const PlanRunInfo run{ inputVolume,
+                           deviceCatalog.empty() ? BesideExecutable(argv[0], "devices.json") : deviceCatalog,
                            neckRules.empty() ? DefaultNeckRulesPath(argv[0]) : neckRules };
     if (request.through >= PlanStage::Measurements)
       params.neckRules = ReadNeckRules(run.neckRules);

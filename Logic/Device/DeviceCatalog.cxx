@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "Common/Errors.h"
+#include "Common/Text.h"
 #include "Device/CriterionCheck.h"
 
 namespace sgp
@@ -13,21 +14,6 @@ namespace sgp
 
 namespace
 {
-
-std::string Lower(const std::string& text)
-{
-  std::string lower = text;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return lower;
-}
-
-std::string Trim(const std::string& text)
-{
-  const auto first = text.find_first_not_of(" \t");
-  if (first == std::string::npos)
-    return "";
-  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
-}
 
 /// Checks one family field by field; `Fail` builds the message with the field's name.
 class FamilyValidator
@@ -42,11 +28,11 @@ public:
 
   void Run()
   {
-    if (Trim(m_Family.name).empty())
+    if (TrimBlanks(m_Family.name).empty())
       Fail("name", "is empty", "a family name such as \"Endurant II\"");
     if (m_Family.name.find(':') != std::string::npos)
       Fail("name", "contains ':'", "a name without ':' (--device uses ':' before the diameter)");
-    if (Trim(m_Family.source).empty())
+    if (TrimBlanks(m_Family.source).empty())
       Fail("source", "is empty", "where the figures come from, with its evidence mark");
     CheckComponent(m_Family.mainBodies, "mainBodies", "main body");
     CheckComponent(m_Family.limbs, "limbs", "limb");
@@ -194,7 +180,7 @@ void ValidateDeviceCatalog(const DeviceCatalog& catalog)
   {
     FamilyValidator(catalog, int(i)).Run();
     for (size_t j = 0; j < i; ++j)
-      if (Lower(Trim(catalog.families[j].name)) == Lower(Trim(catalog.families[i].name)))
+      if (LowerCase(TrimBlanks(catalog.families[j].name)) == LowerCase(TrimBlanks(catalog.families[i].name)))
         throw InputError(DescribeCatalogField(catalog.origin, int(i), catalog.families[i].name, "name") +
                          ": repeats families[" + std::to_string(j) +
                          "]; expected unique names (case-insensitive); rename one.");
@@ -203,9 +189,9 @@ void ValidateDeviceCatalog(const DeviceCatalog& catalog)
 
 const DeviceFamily* FindDeviceFamily(const DeviceCatalog& catalog, const std::string& name)
 {
-  const std::string wanted = Lower(Trim(name));
+  const std::string wanted = LowerCase(TrimBlanks(name));
   for (const DeviceFamily& family : catalog.families)
-    if (Lower(Trim(family.name)) == wanted)
+    if (LowerCase(TrimBlanks(family.name)) == wanted)
       return &family;
   return nullptr;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "Common/Errors.h"
+#include "Common/Text.h"
 
 namespace sgp
 {
@@ -14,21 +15,6 @@ namespace
 
 constexpr double Infinity = std::numeric_limits<double>::infinity();
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
-
-std::string Lower(const std::string& text)
-{
-  std::string lower = text;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return lower;
-}
-
-std::string Trim(const std::string& text)
-{
-  const auto first = text.find_first_not_of(" \t");
-  if (first == std::string::npos)
-    return "";
-  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
-}
 
 bool InRange(const NeckQuantity& q, double value)
 {
@@ -90,10 +76,10 @@ public:
 
   void Run() const
   {
-    if (Trim(m_Rule.id).empty())
+    if (TrimBlanks(m_Rule.id).empty())
       Fail("id", "is empty", "a short unique name such as \"short-neck\"");
     for (int j = 0; j < m_Index; ++j)
-      if (Lower(Trim(m_Set.rules[size_t(j)].id)) == Lower(Trim(m_Rule.id)))
+      if (LowerCase(TrimBlanks(m_Set.rules[size_t(j)].id)) == LowerCase(TrimBlanks(m_Rule.id)))
         Fail("id", "repeats rules[" + std::to_string(j) + "]", "unique ids (case-insensitive)");
     const NeckQuantity* q = FindNeckQuantity(m_Rule.quantity);
     if (!q)
@@ -107,7 +93,7 @@ public:
       Fail("unit", "is \"" + m_Rule.unit + "\"", "\"" + std::string(q->unit) + "\", the unit of " + q->name);
     if (!InRange(*q, m_Rule.threshold))
       Fail("threshold", "is " + ValueText(m_Rule.threshold, m_Rule.unit), RangeText(*q) + " for " + q->name);
-    if (Trim(m_Rule.source).empty())
+    if (TrimBlanks(m_Rule.source).empty())
       Fail("source", "is empty", "the publication the threshold comes from, with its evidence mark");
   }
 
@@ -277,7 +263,7 @@ std::string DescribeNeckRuleField(const std::string& origin, int index, const st
   if (index >= 0)
   {
     text += ", rules[" + std::to_string(index) + "]";
-    if (!Trim(id).empty())
+    if (!TrimBlanks(id).empty())
       text += " \"" + id + "\"";
   }
   return text + ", field '" + field + "'";

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "Common/Errors.h"
+#include "IO/JsonText.h"
 
 namespace sgp
 {
@@ -17,31 +18,6 @@ namespace
 {
 
 using Json = nlohmann::json;
-
-/// "the string \"23\"", "the number 23", "an array", … — the value seen, briefly.
-std::string Seen(const Json& value)
-{
-  std::string dump = value.dump();
-  if (dump.size() > 40)
-    dump = dump.substr(0, 37) + "...";
-  switch (value.type())
-  {
-    case Json::value_t::string:
-      return "the string " + dump;
-    case Json::value_t::number_integer:
-    case Json::value_t::number_unsigned:
-    case Json::value_t::number_float:
-      return "the number " + dump;
-    case Json::value_t::boolean:
-      return "the boolean " + dump;
-    case Json::value_t::array:
-      return "an array " + dump;
-    case Json::value_t::object:
-      return "an object " + dump;
-    default:
-      return "null";
-  }
-}
 
 /// Reads one entry (the top level, or one family) field by field, naming them in errors.
 class EntryReader
@@ -82,7 +58,7 @@ public:
       Fail(field, "is missing", Expected(type));
     const bool number = type == Json::value_t::number_float && it->is_number();
     if (!number && it->type() != type)
-      Fail(field, "is " + Seen(*it), Expected(type));
+      Fail(field, "is " + DescribeJsonValue(*it), Expected(type));
     return *it;
   }
 
@@ -118,7 +94,7 @@ public:
   {
     const Json& item = array[i];
     if (!item.is_object())
-      Fail(path + "[" + std::to_string(i) + "]", "is " + Seen(item), "an object");
+      Fail(path + "[" + std::to_string(i) + "]", "is " + DescribeJsonValue(item), "an object");
     return item;
   }
 
@@ -186,7 +162,8 @@ DeviceComponent ReadComponent(const EntryReader& r, const Json& family, const st
     for (size_t i = 0; i < lengths.size(); ++i)
     {
       if (!lengths[i].is_number())
-        r.Fail(key + ".lengthToFlowDividerMm[" + std::to_string(i) + "]", "is " + Seen(lengths[i]), "a number");
+        r.Fail(key + ".lengthToFlowDividerMm[" + std::to_string(i) + "]", "is " + DescribeJsonValue(lengths[i]),
+               "a number");
       c.lengthToFlowDividerMm.push_back(lengths[i].get<double>());
     }
   }
@@ -243,7 +220,8 @@ DeviceFamily ReadFamily(const std::string& origin, const Json& families, size_t 
   EntryReader r(origin, int(index));
   const Json& json = families[index];
   if (!json.is_object())
-    r.Fail("families[" + std::to_string(index) + "]", "is " + Seen(json), "an object describing one device family");
+    r.Fail("families[" + std::to_string(index) + "]", "is " + DescribeJsonValue(json),
+           "an object describing one device family");
   DeviceFamily family;
   family.name = r.Text(json, "", "name", true);
   r.SetName(family.name);
@@ -262,14 +240,6 @@ DeviceFamily ReadFamily(const std::string& origin, const Json& families, size_t 
   return family;
 }
 
-/// nlohmann's parse message without its "[json.exception.parse_error.101] " prefix, one line.
-std::string ParseMessage(const std::string& what)
-{
-  std::string message = what.substr(what.find(']') == std::string::npos ? 0 : what.find(']') + 2);
-  std::replace(message.begin(), message.end(), '\n', ' ');
-  return message;
-}
-
 } // namespace
 
 DeviceCatalog ParseDeviceCatalog(const std::string& text, const std::string& origin)
@@ -281,16 +251,17 @@ DeviceCatalog ParseDeviceCatalog(const std::string& text, const std::string& ori
   }
   catch (const Json::parse_error& e)
   {
-    throw InputError("Device catalogue '" + origin + "' is not valid JSON: " + ParseMessage(e.what()) +
+    throw InputError("Device catalogue '" + origin + "' is not valid JSON: " + JsonErrorMessage(e.what()) +
                      "; fix the syntax there (often a missing comma, quote or bracket).");
   }
   EntryReader top(origin, -1);
   if (!json.is_object())
-    top.Fail("(top level)", "is " + Seen(json), "an object with formatVersion and families");
+    top.Fail("(top level)", "is " + DescribeJsonValue(json), "an object with formatVersion and families");
   top.OnlyKeys(json, "", { "formatVersion", "description", "families" });
   const Json& version = top.Member(json, "", "formatVersion", Json::value_t::number_float);
   if (!version.is_number_integer() && !version.is_number_unsigned())
-    top.Fail("formatVersion", "is " + Seen(version), "the integer " + std::to_string(DeviceCatalogFormatVersion));
+    top.Fail("formatVersion", "is " + DescribeJsonValue(version),
+             "the integer " + std::to_string(DeviceCatalogFormatVersion));
   DeviceCatalog catalog;
   catalog.origin = origin;
   catalog.formatVersion = version.get<int>();

@@ -1,7 +1,6 @@
 #include "IO/ReadNeckRules.h"
 
 #include <algorithm>
-#include <filesystem>
 #include <functional>
 #include <fstream>
 #include <sstream>
@@ -10,6 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "Common/Errors.h"
+#include "IO/JsonText.h"
+#include "IO/ResourcePath.h"
 
 namespace sgp
 {
@@ -18,32 +19,6 @@ namespace
 {
 
 using Json = nlohmann::json;
-
-/// "the string \"23\"", "the number 23", "an array", … — the value seen, briefly (as
-/// ReadDeviceCatalog writes it).
-std::string Seen(const Json& value)
-{
-  std::string dump = value.dump();
-  if (dump.size() > 40)
-    dump = dump.substr(0, 37) + "...";
-  switch (value.type())
-  {
-    case Json::value_t::string:
-      return "the string " + dump;
-    case Json::value_t::number_integer:
-    case Json::value_t::number_unsigned:
-    case Json::value_t::number_float:
-      return "the number " + dump;
-    case Json::value_t::boolean:
-      return "the boolean " + dump;
-    case Json::value_t::array:
-      return "an array " + dump;
-    case Json::value_t::object:
-      return "an object " + dump;
-    default:
-      return "null";
-  }
-}
 
 std::string List(const std::vector<std::string>& items)
 {
@@ -85,7 +60,7 @@ public:
       Fail(key, "is missing", Expected(type));
     const bool number = type == Json::value_t::number_float && it->is_number();
     if (!number && it->type() != type)
-      Fail(key, "is " + Seen(*it), Expected(type));
+      Fail(key, "is " + DescribeJsonValue(*it), Expected(type));
     return *it;
   }
 
@@ -126,7 +101,7 @@ NeckRule ReadRule(const std::string& origin, const Json& rules, size_t index)
   const Json& json = rules[index];
   if (!json.is_object())
     throw InputError(DescribeNeckRuleField(origin, -1, "", "rules[" + std::to_string(index) + "]") + ": is " +
-                     Seen(json) + "; expected an object describing one rule; correct the file.");
+                     DescribeJsonValue(json) + "; expected an object describing one rule; correct the file.");
   NeckRule rule;
   rule.id = r.Text(json, "id");
   r.SetId(rule.id);
@@ -143,14 +118,6 @@ NeckRule ReadRule(const std::string& origin, const Json& rules, size_t index)
   rule.description = r.Text(json, "description");
   rule.source = r.Text(json, "source");
   return rule;
-}
-
-/// nlohmann's parse message without its "[json.exception.parse_error.101] " prefix, one line.
-std::string ParseMessage(const std::string& what)
-{
-  std::string message = what.substr(what.find(']') == std::string::npos ? 0 : what.find(']') + 2);
-  std::replace(message.begin(), message.end(), '\n', ' ');
-  return message;
 }
 
 /// Follows the parse (nlohmann's parser callback) so that an error can name where it happened:
@@ -241,7 +208,7 @@ Json ParseJson(const std::string& text, const std::string& origin)
   catch (const Json::parse_error& e)
   {
     const std::string where = tracker.Location();
-    throw InputError("Hostile-neck rules '" + origin + "' is not valid JSON: " + ParseMessage(e.what()) +
+    throw InputError("Hostile-neck rules '" + origin + "' is not valid JSON: " + JsonErrorMessage(e.what()) +
                      (where.empty() ? "" : " (near " + where + ")") +
                      "; fix the syntax there (often a missing comma, quote or bracket).");
   }
@@ -249,7 +216,7 @@ Json ParseJson(const std::string& text, const std::string& origin)
   {
     const std::string where = tracker.Location();
     throw InputError("Hostile-neck rules '" + origin + "'" + (where.empty() ? "" : ", " + where) + ": " +
-                     ParseMessage(e.what()) +
+                     JsonErrorMessage(e.what()) +
                      "; expected a finite number (JSON has no NaN or infinity); correct the value.");
   }
 }
@@ -261,16 +228,16 @@ NeckRuleSet ParseNeckRules(const std::string& text, const std::string& origin)
   const Json json = ParseJson(text, origin);
   FieldReader top(origin, -1);
   if (!json.is_object())
-    top.Fail("(top level)", "is " + Seen(json), "an object with format, version, name and rules");
+    top.Fail("(top level)", "is " + DescribeJsonValue(json), "an object with format, version, name and rules");
   top.OnlyKeys(json, { "format", "version", "name", "description", "rules" });
   const std::string format = top.Text(json, "format");
   if (format != NeckRulesFormat)
     top.Fail("format", "is \"" + format + "\"", "\"" + std::string(NeckRulesFormat) + "\" (a hostile-neck rule file)");
   const Json& version = top.Member(json, "version", Json::value_t::number_float);
   if (!version.is_number_integer() && !version.is_number_unsigned())
-    top.Fail("version", "is " + Seen(version), "the integer " + std::to_string(NeckRulesFormatVersion));
+    top.Fail("version", "is " + DescribeJsonValue(version), "the integer " + std::to_string(NeckRulesFormatVersion));
   if (version.get<long long>() != NeckRulesFormatVersion)
-    top.Fail("version", "is " + Seen(version),
+    top.Fail("version", "is " + DescribeJsonValue(version),
              std::to_string(NeckRulesFormatVersion) + " (the version this StentGraftPlanner reads)");
   NeckRuleSet set;
   set.origin = origin;
@@ -298,11 +265,7 @@ NeckRuleSet ReadNeckRules(const std::string& path)
 
 std::string DefaultNeckRulesPath(const std::string& argv0)
 {
-  std::error_code error;
-  std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (error)
-    exe = std::filesystem::absolute(argv0, error);
-  return (exe.parent_path() / NeckRulesFileName).string();
+  return BesideExecutable(argv0, NeckRulesFileName);
 }
 
 } // namespace sgp

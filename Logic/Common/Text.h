@@ -1,0 +1,30 @@
+/// \file Text.h
+/// Small text helpers for names read from files (catalogue families, rule ids): compared
+/// case-insensitively and without surrounding blanks.
+#pragma once
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+
+namespace sgp
+{
+
+/// `text` in lower case (ASCII).
+inline std::string LowerCase(const std::string& text)
+{
+  std::string lower = text;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return lower;
+}
+
+/// `text` without leading and trailing spaces and tabs.
+inline std::string TrimBlanks(const std::string& text)
+{
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string::npos)
+    return "";
+  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
+} // namespace sgp
