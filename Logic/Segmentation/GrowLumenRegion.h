@@ -30,8 +30,11 @@
 ///     bowel, marrow): AlgorithmError. So does a lumen over `maximumLumenVolumeMl`.
 ///  5. **Boundary refinement.** The boundary is moved to the half-maximum between lumen (m) and the
 ///     surrounding tissue (median HU `tissueDepthMm` outside the region, beyond the blur of the edge): neighbours
-///     within `refineDistanceMm` with HU in [edge, upper], not beside calcium, are added; this undoes the conservative
-///     lower threshold without reaching into darker tissue.
+///     within `refineDistanceMm` (millimetres on every axis, an ellipsoid of voxels on the grid) with HU in
+///     [edge, upper], not beside calcium, are added; this undoes the conservative lower threshold without reaching
+///     into darker tissue. The reach is what the blur needs and no more: on the 1 mm-blur phantom the lumen is
+///     complete at 1.6 mm (volume −0.5 %, −0.4 % at 2 mm, −17 % without refinement), while every further
+///     tenth of a millimetre takes more of an enhancing vein behind a thin wall (2.1–3.5 % of it at 2 mm).
 ///  6. **Pits and holes:** single background voxels with five or six lumen faces (noise pits in the
 ///     boundary) and background cavities not connected to the outside become lumen.
 ///
@@ -82,7 +85,7 @@ struct RegionGrowingParams
 
   double seedNeighbourhoodRadiusMm = 2.5; ///< ball for the seed statistics, mm
   double minimumHalfWindowHu = 30.0;      ///< floor of h for noise-free images, HU
-  double refineDistanceMm = 2.0;          ///< reach of the boundary refinement, mm
+  double refineDistanceMm = 1.6;          ///< reach of the boundary refinement, mm
   double tissueDepthMm = 5.0;             ///< where tissue is sampled outside the region, mm
   double leakMinimumPieceMl = 10.0;       ///< smaller cut-off pieces are vessels and stay, mL
   double darkLeakLimitMl = 5.0;           ///< dark interior volume that means a flood, mL

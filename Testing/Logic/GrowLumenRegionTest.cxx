@@ -1,5 +1,6 @@
 // Tests of GrowLumenRegion against the analytic truth of the synthetic phantom (STYLE.md B6).
 #include <cmath>
+#include <tuple>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -98,12 +99,80 @@ TEST_P(EnhancingKidneys, AtTheRenalArteryEnds_NotFlooded)
   const auto overlap = CompareWithTruth(*lumen.mask, *phantom.labels);
   ASSERT_GT(overlap.labelCount[KidneyLabel], 0);
   // Below 1 % of the parenchyma: only the voxels the boundary refinement may take around the
-  // renal artery's end (its 2 mm reach), never the organ.
+  // renal artery's end (its 1.6 mm reach), never the organ.
   EXPECT_LT(overlap.FractionOf(KidneyLabel), 0.01);
   EXPECT_GE(overlap.Dice(), minimumDice);
 }
 
 INSTANTIATE_TEST_SUITE_P(GrowLumenRegion, EnhancingKidneys, ::testing::Values(150.0, 200.0));
+
+/// An enhancing vein against the aorta: its HU and the wall's thickness (mm), on the default grid
+/// (0.8 × 0.8 × 1 mm, 20 HU).
+class EnhancingVeinAgainstTheWall : public ::testing::TestWithParam<std::tuple<double, double>>
+{
+};
+
+TEST_P(EnhancingVeinAgainstTheWall, BoundaryRefinementStaysWithinItsReach)
+{
+  // The left renal vein (≈ 150–250 HU in the arterial phase, vessel-wall.md §2) crossing in front
+  // of the aorta, separated from the lumen only by the wall, which the blur leaves brighter than
+  // the edge level: the refinement (voxels in [edge, upper] within its reach) runs through the
+  // wall into the vein as far as its reach goes. Before, the reach was counted in face steps of
+  // the finest spacing (on 2.5 mm slices three slices, 7.5 mm) and was 2 mm where the lumen is
+  // complete at 1.6 mm: 2.1–3.5 % of the vein inside on 0.8 × 0.8 × 1 mm, 3.9 % in the wall plan.
+  PhantomParams p;
+  p.leftRenalVeinHu = std::get<0>(GetParam());
+  p.wallThicknessMm = std::get<1>(GetParam());
+  p.includeLeftRenalVein = true;
+  p.tissueHu = -100.0;
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  const LumenSegmentation lumen = GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, RegionGrowingParams{});
+  const auto overlap = CompareWithTruth(*lumen.mask, *phantom.labels);
+  ASSERT_GT(overlap.labelCount[RenalVeinLabel], 1000);
+  // Issue 12's bar for a neighbour inside the vessel: under 2 % of its voxels.
+  EXPECT_LT(overlap.FractionOf(RenalVeinLabel), 0.02) << 100.0 * overlap.FractionOf(RenalVeinLabel) << " %";
+  EXPECT_GE(overlap.Dice(), minimumDice);
+}
+
+INSTANTIATE_TEST_SUITE_P(GrowLumenRegion,
+                         EnhancingVeinAgainstTheWall,
+                         ::testing::Values(std::make_tuple(150.0, 0.5),
+                                           std::make_tuple(150.0, 1.5),
+                                           std::make_tuple(200.0, 0.5),
+                                           std::make_tuple(200.0, 1.5),
+                                           std::make_tuple(250.0, 0.5),
+                                           std::make_tuple(250.0, 1.5)));
+// Not asserted on thick noisy slices (0.7 × 0.7 × 2.5 mm, 30 HU): there 4.5 % of a 200 HU vein is
+// taken (noise carries the refinement through the blurred wall; issue 12's note).
+
+TEST(GrowLumenRegion, ThickSlices_RefinementReachIsMillimetresNotSlices)
+{
+  // A lumen disc on 0.7 × 0.7 × 2.5 mm slices ending against a plateau of 200 HU (between the
+  // edge level, 195 HU, and the window's lower end): the refinement reaches 1.6 mm, less than
+  // one slice, so not one voxel of the plateau. Counted in face steps of the finest spacing it
+  // reached three slices (7.5 mm) into it.
+  auto ct = CtImage::New();
+  CtImage::RegionType region;
+  region.SetSize({ { 40, 40, 30 } });
+  ct->SetRegions(region);
+  ct->SetSpacing(CtImage::SpacingType(std::array<double, 3>{ 0.7, 0.7, 2.5 }.data()));
+  ct->Allocate();
+  ct->FillBuffer(40);
+  for (long k = 0; k < 30; ++k)
+    for (long j = 0; j < 40; ++j)
+      for (long i = 0; i < 40; ++i)
+        if ((i - 20) * (i - 20) + (j - 20) * (j - 20) <= 100)
+          ct->SetPixel({ { i, j, k } }, k < 15 ? 350 : 200);
+  const LumenSegmentation lumen = GrowLumenRegion(*ct, Point3(14.0, 14.0, 15.0), RegionGrowingParams{});
+  ASSERT_NEAR(lumen.edgeHu, 195.0, 1.0); // half-way from 350 to the 40 HU around
+  long plateau = 0, disc = 0;
+  for (long k = 0; k < 30; ++k)
+    for (long j = 0; j < 40; ++j)
+      for (long i = 0; i < 40; ++i)
+        (k < 15 ? disc : plateau) += lumen.mask->GetPixel({ { i, j, k } });
+  EXPECT_EQ(plateau, 0);
+  EXPECT_GT(disc, 15 * 300); // the disc itself (317 voxels a slice) is lumen
+}
 
 TEST(GrowLumenRegion, ManualWindowBelowKidneyHu_FloodDetected)
 {

@@ -148,9 +148,10 @@ TEST(VesselWall, NeighboursWithoutAFatPlane_FewerThanTwoPercentInsideAndNoNumber
   request.wallLabelMap = true;
   const RepairPlan plan = PlanRepair(phantom.ct, phantom.truth.seedLps, request, DefaultParams());
   ASSERT_TRUE(plan.wallLabels);
-  // Issue 12's bar, < 2 %, holds for the psoas, the IVC and the duodenum. The left renal vein is
-  // not asserted: 3.9 % of it lies inside (issue 12 stays open on it; the closing note says so).
-  for (const PhantomLabel label : { PsoasLabel, IvcLabel, DuodenumLabel })
+  // Issue 12's bar, < 2 %, for each. (The enhancing left renal vein had 3.9 % inside: the lumen's
+  // boundary refinement reached through the blurred wall into it; its reach is now 1.6 mm on
+  // every axis, GrowLumenRegion.h.)
+  for (const PhantomLabel label : { PsoasLabel, IvcLabel, DuodenumLabel, RenalVeinLabel })
   {
     long count = 0;
     const double inside = FractionInside(*plan.wallLabels, *phantom.labels, label, count);
