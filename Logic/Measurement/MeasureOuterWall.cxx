@@ -51,10 +51,12 @@ Measurement OuterDiameter(const std::string& name,
   }
   if (!plane->Usable())
   {
-    out.warnings.push_back(name + ": only " + Percent(supportedFraction) + " of the circumference at " +
-                           FormatNumber(s) + " mm along the " + vessel +
-                           " shows an outer wall (at least 25 % needed) and no traced plane lies within 20 mm; not "
-                           "measured.");
+    out.warnings.push_back(
+      name + ": only " + Percent(supportedFraction) + " of the circumference at " + FormatNumber(s) + " mm along the " +
+      vessel +
+      " shows an outer wall (at least 25 % needed) and the traced planes above and below lie more than "
+      "20 mm apart (or one is missing); not "
+      "measured.");
     return m;
   }
   m.value = value;

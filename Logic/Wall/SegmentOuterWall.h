@@ -23,13 +23,16 @@
 ///  4. A circle fitted to the candidates (least squares, Kåsa), then repeatedly refitted without
 ///     the candidates more than `outlierMm` outside it: a neighbour that touches the vessel
 ///     without a fat plane (psoas, IVC, duodenum, a vein) moves the first fat edge outward, never
-///     inward, so the outliers are those beyond the circle; the rays beside an outlier sector go
-///     too (they still see the neighbour's blurred edge), and the circle is fitted once more. The
-///     candidates kept are *supported*; on every other ray the boundary is the circle's.
+///     inward, so the outliers are those beyond the circle. When that leaves the plane under
+///     `minimumSupport`, every candidate, also one dropped on the way, is judged once more against
+///     the converged circle (the first circle leans toward a wide neighbour, and the wall's own
+///     far side would be lost), and the circle refitted; the rays beside an outlier sector go too (they still see the
+///     neighbour's blurred edge), and the circle is fitted once more. The candidates kept are *supported*; on every
+///     other ray the boundary is the circle's.
 /// The plane records the share of its rays that were supported; with fewer than
-/// `minimumSupport` it is flagged, and takes the contours of the traced planes within
-/// `interpolateWithinMm` above and below, ray by ray (`interpolated`; not one on each side: no
-/// contour — never extrapolated).
+/// `minimumSupport` it is flagged, and takes the contours of the traced planes above and below,
+/// ray by ray, when they are at most `interpolateWithinMm` apart (`interpolated`; otherwise, or
+/// without one on each side: no contour — never extrapolated).
 /// A ray's outer radius is never inside the lumen — except where the lumen runs out along a
 /// branch, which counts only up to the fitted circle.
 ///
@@ -70,7 +73,8 @@ struct OuterWallParams
   double outlierMm = 1.0;       ///< candidates this far outside the fitted circle are not the wall
   double minimumSupport = 0.25; ///< below this share of supported rays the plane is flagged
   int smoothRays = 2;           ///< the contour's radii averaged over 2·smoothRays + 1 rays, [0, rays/4]
-  /// A flagged plane takes the contours of the traced planes within this (each side), [0, 100] mm.
+  /// A flagged plane takes the contours of the traced planes above and below when they are at most
+  /// this far apart, [0, 100] mm.
   double interpolateWithinMm = 20.0;
   /// HU at or above which a sample between the lumen's edge and the outer wall (+0.5 mm) is
   /// calcium; +∞: none is looked for.
