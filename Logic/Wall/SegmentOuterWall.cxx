@@ -348,49 +348,61 @@ OuterWall SegmentOuterWall(const CtImage& ct,
           break; // the first crossing decides: beyond it lies what is not this vessel
         }
     }
-    // 4. Robust circle: drop candidates beyond it, refit.
-    std::vector<bool> kept(K);
-    for (int k = 0; k < K; ++k)
-      kept[k] = candidate[k] > 0.0;
-    Eigen::Vector3d circle(0.0, 0.0, 0.0);
-    for (int iteration = 0; iteration < 20; ++iteration)
+    // 4. Robust circle. Fit, drop the candidates more than outlierMm beyond the circle, refit, until none is dropped.
+    const auto dropOutliers = [&](std::vector<bool>& kept, Eigen::Vector3d& circle)
     {
-      std::vector<Eigen::Vector2d> points;
-      for (int k = 0; k < K; ++k)
-        if (kept[k])
-          points.push_back(candidate[k] * direction[k]);
-      if (points.size() < 3)
-        break;
-      circle = FitCircle(points);
-      bool changed = false;
-      for (int k = 0; k < K; ++k)
-        if (kept[k] && candidate[k] > RayCircle(circle, direction[k]) + params.outlierMm)
-        {
-          kept[k] = false;
-          changed = true;
-        }
-      if (!changed)
-        break;
-    }
-    // When the drops left the plane under its minimum support, every candidate is judged once
-    // more against the circle they converged to: a wide neighbour (the psoas, 160°) pulls the
-    // first circle toward it, the wall's own candidates on the far side then lie outside it for
-    // a round or two, and dropped for good they left 3 % of the neck supported. (Judged anew in
-    // every plane, a coherent sector a little outside — a plaque's blurred halo on the plane
-    // through its end — came back and pulled the circle out: (a) +1.0 mm.)
-    int keptCount = 0;
-    for (int k = 0; k < K; ++k)
-      keptCount += kept[k] ? 1 : 0;
-    if (circle[2] > 0.0 && keptCount < params.minimumSupport * K)
-    {
-      for (int k = 0; k < K; ++k)
-        kept[k] = candidate[k] > 0.0 && candidate[k] <= RayCircle(circle, direction[k]) + params.outlierMm;
-      std::vector<Eigen::Vector2d> points;
-      for (int k = 0; k < K; ++k)
-        if (kept[k])
-          points.push_back(candidate[k] * direction[k]);
-      if (points.size() >= 3)
+      for (int iteration = 0; iteration < 20; ++iteration)
+      {
+        std::vector<Eigen::Vector2d> points;
+        for (int k = 0; k < K; ++k)
+          if (kept[k])
+            points.push_back(candidate[k] * direction[k]);
+        if (points.size() < 3)
+          break;
         circle = FitCircle(points);
+        bool changed = false;
+        for (int k = 0; k < K; ++k)
+          if (kept[k] && candidate[k] > RayCircle(circle, direction[k]) + params.outlierMm)
+          {
+            kept[k] = false;
+            changed = true;
+          }
+        if (!changed)
+          break;
+      }
+    };
+    // A neighbour pressed against the wall only ever lifts the fat edge, by its own thickness:
+    // the fit starts from the thinner half of the rays (candidate − lumen radius at most its
+    // median), drops as above, and then every candidate is judged against that circle. (Started
+    // from all candidates, a wide neighbour — the psoas, 160°; the duodenum, 100° — pulled the
+    // first circle toward it, the wall's own candidates on the far side then lay outside it and
+    // were dropped for good: 3 % of the neck supported, or (b) read 27.1 mm for 25; and a coherent
+    // sector a little outside — a plaque's blurred halo on the plane through its end — stayed in
+    // and pulled the circle out: (a) +1.0 mm.)
+    std::vector<double> depths;
+    for (int k = 0; k < K; ++k)
+      if (candidate[k] > 0.0)
+        depths.push_back(candidate[k] - plane.lumenRadiusMm[k]);
+    std::vector<bool> kept(K, false);
+    Eigen::Vector3d circle(0.0, 0.0, 0.0);
+    if (depths.size() >= 3)
+    {
+      const double medianDepth = Median(depths);
+      for (int k = 0; k < K; ++k)
+        kept[k] = candidate[k] > 0.0 && candidate[k] - plane.lumenRadiusMm[k] <= medianDepth;
+      dropOutliers(kept, circle);
+      if (circle[2] > 0.0)
+      {
+        std::vector<Eigen::Vector2d> points;
+        for (int k = 0; k < K; ++k)
+        {
+          kept[k] = candidate[k] > 0.0 && candidate[k] <= RayCircle(circle, direction[k]) + params.outlierMm;
+          if (kept[k])
+            points.push_back(candidate[k] * direction[k]);
+        }
+        if (points.size() >= 3)
+          circle = FitCircle(points);
+      }
     }
     // The rays beside a sector without a boundary still see the neighbour's blurred edge (its
     // first fat crossing lies up to a millimetre out): they are not supported either.

@@ -20,15 +20,14 @@
 ///     `fatSupportMm` — a visible outer boundary. On a ray with calcium (a sample ≥ `calciumHu`
 ///     from 1 mm inside the lumen's edge to the first fat) the crossing is of the ray's own
 ///     half-maximum between its peak and the fat, beyond the peak: calcium anchors the wall.
-///  4. A circle fitted to the candidates (least squares, Kåsa), then repeatedly refitted without
-///     the candidates more than `outlierMm` outside it: a neighbour that touches the vessel
-///     without a fat plane (psoas, IVC, duodenum, a vein) moves the first fat edge outward, never
-///     inward, so the outliers are those beyond the circle. When that leaves the plane under
-///     `minimumSupport`, every candidate, also one dropped on the way, is judged once more against
-///     the converged circle (the first circle leans toward a wide neighbour, and the wall's own
-///     far side would be lost), and the circle refitted; the rays beside an outlier sector go too (they still see the
-///     neighbour's blurred edge), and the circle is fitted once more. The candidates kept are *supported*; on every
-///     other ray the boundary is the circle's.
+///  4. A circle fitted to the candidates of the thinner half of the rays (candidate − lumen
+///     radius at most its median: a neighbour that touches the vessel without a fat plane —
+///     psoas, IVC, duodenum, a vein — moves the first fat edge outward by its own thickness,
+///     never inward), least squares (Kåsa), then repeatedly refitted without the candidates more
+///     than `outlierMm` outside it; then every candidate is judged against that circle (kept when
+///     at most `outlierMm` outside) and the circle refitted. The rays beside an unsupported sector
+///     go too (they still see the neighbour's blurred edge), and the circle is fitted once more.
+///     The candidates kept are *supported*; on every other ray the boundary is the circle's.
 /// The plane records the share of its rays that were supported; with fewer than
 /// `minimumSupport` it is flagged, and takes the contours of the traced planes above and below,
 /// ray by ray, when they are at most `interpolateWithinMm` apart (`interpolated`; otherwise, or
