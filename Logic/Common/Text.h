@@ -1,11 +1,12 @@
 /// \file Text.h
 /// Small text helpers for names read from files (catalogue families, rule ids): compared
-/// case-insensitively and without surrounding blanks.
+/// case-insensitively and without surrounding blanks, and listed in error messages.
 #pragma once
 
 #include <algorithm>
 #include <cctype>
 #include <string>
+#include <vector>
 
 namespace sgp
 {
@@ -25,6 +26,15 @@ inline std::string TrimBlanks(const std::string& text)
   if (first == std::string::npos)
     return "";
   return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
+/// "a, b, c" (empty for no items): the lists of admissible names in error messages.
+inline std::string JoinWithCommas(const std::vector<std::string>& items)
+{
+  std::string list;
+  for (const std::string& item : items)
+    list += (list.empty() ? "" : ", ") + item;
+  return list;
 }
 
 } // namespace sgp

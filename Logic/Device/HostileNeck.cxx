@@ -41,27 +41,6 @@ std::string ValueText(double value, const std::string& unit)
   return CompactNumber(value) + " " + unit;
 }
 
-double QuantityValue(const NeckAnatomy& a, const std::string& quantity)
-{
-  if (quantity == "neckLength")
-    return a.neckLengthMm;
-  if (quantity == "neckDiameter")
-    return a.neckDiameterMm;
-  if (quantity == "neckAngleBeta")
-    return a.neckAngleBetaDeg;
-  if (quantity == "neckAngleAlpha")
-    return a.neckAngleAlphaDeg;
-  if (quantity == "neckThrombusArc")
-    return a.neckThrombusArcPercent;
-  if (quantity == "neckCalcificationArc")
-    return a.neckCalcificationArcPercent;
-  if (quantity == "reverseTaper10mm")
-    return a.reverseTaper10mmMm;
-  if (quantity == "reverseTaper15mm")
-    return a.reverseTaper15mmMm;
-  return NaN;
-}
-
 /// Checks one rule field by field; `Fail` builds the message with the field's name.
 class RuleValidator
 {
@@ -84,10 +63,10 @@ public:
     const NeckQuantity* q = FindNeckQuantity(m_Rule.quantity);
     if (!q)
     {
-      std::string list;
-      for (const NeckQuantity& known : NeckQuantities())
-        list += (list.empty() ? "" : ", ") + std::string(known.name);
-      Fail("quantity", "is \"" + m_Rule.quantity + "\"", "one of " + list + " (check the spelling)");
+      std::vector<std::string> known;
+      for (const NeckQuantity& k : NeckQuantities())
+        known.push_back(k.name);
+      Fail("quantity", "is \"" + m_Rule.quantity + "\"", "one of " + JoinWithCommas(known) + " (check the spelling)");
     }
     if (m_Rule.unit != q->unit)
       Fail("unit", "is \"" + m_Rule.unit + "\"", "\"" + std::string(q->unit) + "\", the unit of " + q->name);
@@ -231,14 +210,17 @@ std::optional<HostileWhen> HostileWhenFromString(const std::string& text)
 const std::vector<NeckQuantity>& NeckQuantities()
 {
   static const std::vector<NeckQuantity> quantities = {
-    { "neckLength", "mm", "neck length", 0.0, Infinity, false },
-    { "neckDiameter", "mm", "neck diameter (a)", 0.0, Infinity, true },
-    { "neckAngleBeta", "deg", "neck angle β", 0.0, 180.0, false },
-    { "neckAngleAlpha", "deg", "neck angle α", 0.0, 180.0, false },
-    { "neckThrombusArc", "%", "neck thrombus arc", 0.0, 100.0, false },
-    { "neckCalcificationArc", "%", "neck calcification arc", 0.0, 100.0, false },
-    { "reverseTaper10mm", "mm", "reverse taper over 10 mm", -Infinity, Infinity, false },
-    { "reverseTaper15mm", "mm", "reverse taper over 15 mm", -Infinity, Infinity, false },
+    { "neckLength", "mm", "neck length", 0.0, Infinity, false, &NeckAnatomy::neckLengthMm },
+    { "neckDiameter", "mm", "neck diameter (a)", 0.0, Infinity, true, &NeckAnatomy::neckDiameterMm },
+    { "neckAngleBeta", "deg", "neck angle β", 0.0, 180.0, false, &NeckAnatomy::neckAngleBetaDeg },
+    { "neckAngleAlpha", "deg", "neck angle α", 0.0, 180.0, false, &NeckAnatomy::neckAngleAlphaDeg },
+    { "neckThrombusArc", "%", "neck thrombus arc", 0.0, 100.0, false, &NeckAnatomy::neckThrombusArcPercent },
+    { "neckCalcificationArc", "%", "neck calcification arc", 0.0, 100.0, false,
+      &NeckAnatomy::neckCalcificationArcPercent },
+    { "reverseTaper10mm", "mm", "reverse taper over 10 mm", -Infinity, Infinity, false,
+      &NeckAnatomy::reverseTaper10mmMm },
+    { "reverseTaper15mm", "mm", "reverse taper over 15 mm", -Infinity, Infinity, false,
+      &NeckAnatomy::reverseTaper15mmMm },
   };
   return quantities;
 }
@@ -282,7 +264,7 @@ void ValidateNeckAnatomy(const NeckAnatomy& anatomy)
 {
   for (const NeckQuantity& q : NeckQuantities())
   {
-    const double value = QuantityValue(anatomy, q.name);
+    const double value = anatomy.*q.field;
     if (!std::isnan(value) && !InRange(q, value))
       throw InputError("Neck anatomy: " + std::string(q.name) + " is " + ValueText(value, q.unit) + "; expected " +
                        RangeText(q) + " or NaN (not measured); check the measurement stage's output.");
@@ -298,8 +280,10 @@ NeckAssessment AssessNeck(const NeckAnatomy& anatomy, const NeckRuleSet& rules)
   ValidateNeckAnatomy(anatomy);
   NeckAssessment a;
   for (const NeckRule& rule : rules.rules)
-    a.checks.push_back(CheckRule(rule, *FindNeckQuantity(rule.quantity), QuantityValue(anatomy, rule.quantity),
-                                 anatomy.neckLengthUncertaintyMm));
+  {
+    const NeckQuantity& q = *FindNeckQuantity(rule.quantity);
+    a.checks.push_back(CheckRule(rule, q, anatomy.*q.field, anatomy.neckLengthUncertaintyMm));
+  }
   a.hostile = a.Count(CheckStatus::Fail) > 0;
   a.determinate = a.Count(CheckStatus::Indeterminate) == 0;
   a.summary = Summary(a, rules);

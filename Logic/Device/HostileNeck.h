@@ -77,15 +77,33 @@ const char* ToString(HostileWhen when);
 /// The comparison spelled `text` (exactly, case-sensitive), or none.
 std::optional<HostileWhen> HostileWhenFromString(const std::string& text);
 
+/// The neck quantities, NaN when not measured (see the table above for units and ranges).
+struct NeckAnatomy
+{
+  static constexpr double NotMeasured = std::numeric_limits<double>::quiet_NaN();
+  double neckLengthMm = NotMeasured;
+  double neckDiameterMm = NotMeasured; ///< (a), outer wall
+  double neckAngleBetaDeg = NotMeasured;
+  double neckAngleAlphaDeg = NotMeasured;
+  double neckThrombusArcPercent = NotMeasured;
+  double neckCalcificationArcPercent = NotMeasured;
+  double reverseTaper10mmMm = NotMeasured; ///< D_out(site + 10 mm) − (a), mm
+  double reverseTaper15mmMm = NotMeasured; ///< D_out(site + 15 mm) − (a), mm
+  /// How far the measured neck length may lie from the true one, mm (≥ 0, finite; 0 for an exact
+  /// input): a neck-length margin within it is indeterminate.
+  double neckLengthUncertaintyMm = 0.0;
+};
+
 /// One quantity the engine knows, with its unit and range (inclusive unless stated).
 struct NeckQuantity
 {
-  const char* name;  ///< the rule file's spelling, e.g. "neckLength"
-  const char* unit;  ///< "mm", "deg" or "%"
-  const char* label; ///< opens a check's text, e.g. "neck length"
-  double min;        ///< smallest admissible value (−inf: none)
-  double max;        ///< largest admissible value (+inf: none)
-  bool minExclusive; ///< true: the value must exceed `min` (a diameter > 0)
+  const char* name;           ///< the rule file's spelling, e.g. "neckLength"
+  const char* unit;           ///< "mm", "deg" or "%"
+  const char* label;          ///< opens a check's text, e.g. "neck length"
+  double min;                 ///< smallest admissible value (−inf: none)
+  double max;                 ///< largest admissible value (+inf: none)
+  bool minExclusive;          ///< true: the value must exceed `min` (a diameter > 0)
+  double NeckAnatomy::*field; ///< where NeckAnatomy holds it
 };
 
 /// The eight quantities, in the order of the table above.
@@ -110,23 +128,6 @@ struct NeckRuleSet
   std::string name;            ///< the set's own label, e.g. "StentGraftPlanner default hostile-neck rules"
   std::string origin;          ///< where it came from (a file path), named in messages
   std::vector<NeckRule> rules; ///< at least one
-};
-
-/// The neck quantities, NaN when not measured (see the table above for units and ranges).
-struct NeckAnatomy
-{
-  static constexpr double NotMeasured = std::numeric_limits<double>::quiet_NaN();
-  double neckLengthMm = NotMeasured;
-  double neckDiameterMm = NotMeasured; ///< (a), outer wall
-  double neckAngleBetaDeg = NotMeasured;
-  double neckAngleAlphaDeg = NotMeasured;
-  double neckThrombusArcPercent = NotMeasured;
-  double neckCalcificationArcPercent = NotMeasured;
-  double reverseTaper10mmMm = NotMeasured; ///< D_out(site + 10 mm) − (a), mm
-  double reverseTaper15mmMm = NotMeasured; ///< D_out(site + 15 mm) − (a), mm
-  /// How far the measured neck length may lie from the true one, mm (≥ 0, finite; 0 for an exact
-  /// input): a neck-length margin within it is indeterminate.
-  double neckLengthUncertaintyMm = 0.0;
 };
 
 struct NeckAssessment

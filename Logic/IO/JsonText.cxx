@@ -30,6 +30,41 @@ std::string DescribeJsonValue(const nlohmann::json& value)
   }
 }
 
+std::string JsonTypeWords(nlohmann::json::value_t type)
+{
+  using Json = nlohmann::json;
+  switch (type)
+  {
+    case Json::value_t::number_float:
+      return "a number";
+    case Json::value_t::string:
+      return "a string";
+    case Json::value_t::array:
+      return "an array";
+    default:
+      return "an object";
+  }
+}
+
+std::string JsonMemberMismatch(const nlohmann::json& object, const std::string& key, nlohmann::json::value_t type)
+{
+  const auto it = object.find(key);
+  if (it == object.end())
+    return "is missing";
+  const bool number = type == nlohmann::json::value_t::number_float && it->is_number();
+  if (!number && it->type() != type)
+    return "is " + DescribeJsonValue(*it);
+  return "";
+}
+
+std::string UnknownJsonKey(const nlohmann::json& object, const std::vector<std::string>& allowed)
+{
+  for (const auto& item : object.items())
+    if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end())
+      return item.key();
+  return "";
+}
+
 std::string JsonErrorMessage(const std::string& what)
 {
   std::string message = what.substr(what.find(']') == std::string::npos ? 0 : what.find(']') + 2);

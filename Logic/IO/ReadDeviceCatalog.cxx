@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "Common/Errors.h"
+#include "Common/Text.h"
 #include "IO/JsonText.h"
 
 namespace sgp
@@ -40,26 +41,17 @@ public:
   /// Rejects fields other than `allowed` in `object` (found at `path`).
   void OnlyKeys(const Json& object, const std::string& path, const std::vector<std::string>& allowed) const
   {
-    for (const auto& item : object.items())
-      if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end())
-      {
-        std::string list;
-        for (const std::string& key : allowed)
-          list += (list.empty() ? "" : ", ") + key;
-        Fail(Join(path, item.key()), "is an unknown field", "one of " + list + " (check the spelling)");
-      }
+    const std::string unknown = UnknownJsonKey(object, allowed);
+    if (!unknown.empty())
+      Fail(Join(path, unknown), "is an unknown field", "one of " + JoinWithCommas(allowed) + " (check the spelling)");
   }
 
   const Json& Member(const Json& object, const std::string& path, const std::string& key, Json::value_t type) const
   {
-    const auto it = object.find(key);
-    const std::string field = Join(path, key);
-    if (it == object.end())
-      Fail(field, "is missing", Expected(type));
-    const bool number = type == Json::value_t::number_float && it->is_number();
-    if (!number && it->type() != type)
-      Fail(field, "is " + DescribeJsonValue(*it), Expected(type));
-    return *it;
+    const std::string mismatch = JsonMemberMismatch(object, key, type);
+    if (!mismatch.empty())
+      Fail(Join(path, key), mismatch, JsonTypeWords(type));
+    return object.at(key);
   }
 
   double Number(const Json& object, const std::string& path, const std::string& key) const
@@ -104,21 +96,6 @@ public:
   }
 
 private:
-  static std::string Expected(Json::value_t type)
-  {
-    switch (type)
-    {
-      case Json::value_t::number_float:
-        return "a number";
-      case Json::value_t::string:
-        return "a string";
-      case Json::value_t::array:
-        return "an array";
-      default:
-        return "an object";
-    }
-  }
-
   std::string m_Origin;
   int m_Index;
   std::string m_Name;

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "Common/Errors.h"
+#include "Common/Text.h"
 #include "IO/JsonText.h"
 #include "IO/ResourcePath.h"
 
@@ -19,14 +20,6 @@ namespace
 {
 
 using Json = nlohmann::json;
-
-std::string List(const std::vector<std::string>& items)
-{
-  std::string list;
-  for (const std::string& item : items)
-    list += (list.empty() ? "" : ", ") + item;
-  return list;
-}
 
 /// Reads the top level (index −1) or one rule field by field, naming them in errors.
 class FieldReader
@@ -48,20 +41,17 @@ public:
 
   void OnlyKeys(const Json& object, const std::vector<std::string>& allowed) const
   {
-    for (const auto& item : object.items())
-      if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end())
-        Fail(item.key(), "is an unknown field", "one of " + List(allowed) + " (check the spelling)");
+    const std::string unknown = UnknownJsonKey(object, allowed);
+    if (!unknown.empty())
+      Fail(unknown, "is an unknown field", "one of " + JoinWithCommas(allowed) + " (check the spelling)");
   }
 
   const Json& Member(const Json& object, const std::string& key, Json::value_t type) const
   {
-    const auto it = object.find(key);
-    if (it == object.end())
-      Fail(key, "is missing", Expected(type));
-    const bool number = type == Json::value_t::number_float && it->is_number();
-    if (!number && it->type() != type)
-      Fail(key, "is " + DescribeJsonValue(*it), Expected(type));
-    return *it;
+    const std::string mismatch = JsonMemberMismatch(object, key, type);
+    if (!mismatch.empty())
+      Fail(key, mismatch, JsonTypeWords(type));
+    return object.at(key);
   }
 
   double Number(const Json& object, const std::string& key) const
@@ -75,21 +65,6 @@ public:
   }
 
 private:
-  static std::string Expected(Json::value_t type)
-  {
-    switch (type)
-    {
-      case Json::value_t::number_float:
-        return "a number";
-      case Json::value_t::string:
-        return "a string";
-      case Json::value_t::array:
-        return "an array";
-      default:
-        return "an object";
-    }
-  }
-
   std::string m_Origin;
   int m_Index;
   std::string m_Id;
