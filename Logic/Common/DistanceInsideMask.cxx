@@ -1,8 +1,8 @@
 #include "Common/DistanceInsideMask.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
-#include <queue>
 
 namespace sgp
 {
@@ -10,11 +10,74 @@ namespace sgp
 namespace
 {
 
-struct Candidate
+const double Infinite = std::numeric_limits<double>::infinity();
+
+/// One line of the separable transform: the lower envelope of the parabolas
+/// (p − q)²·s² + f(q) over the line's samples q with finite f (Felzenszwalb & Huttenlocher 2012,
+/// section 3), plus — when the box's outside is background — a site at q = −1 and q = n with
+/// f = 0. For every p of the line, `best[p]` is the minimum and `from[p]` the q that gives it
+/// (−1 or n for the virtual sites; −2 when the line has no site at all).
+class LineTransform
 {
-  float distance;
-  long voxel;
-  bool operator>(const Candidate& other) const { return distance > other.distance; }
+public:
+  void Run(const std::vector<double>& f,
+           double spacing,
+           bool outsideSites,
+           std::vector<double>& best,
+           std::vector<long>& from)
+  {
+    const long n = static_cast<long>(f.size());
+    const double s2 = spacing * spacing;
+    m_Q.clear();
+    m_Boundary.clear();
+    const auto add = [&](long q, double fq)
+    {
+      const double key = fq + s2 * double(q) * double(q);
+      while (!m_Q.empty())
+      {
+        const long r = m_Q.back();
+        const double fr = r < 0 || r >= n ? 0.0 : f[std::size_t(r)];
+        // Where the new parabola crosses the last one kept: beyond the last one's start, or the
+        // last one never lies lowest and goes.
+        const double cross = (key - (fr + s2 * double(r) * double(r))) / (2.0 * s2 * double(q - r));
+        if (cross > m_Boundary.back())
+        {
+          m_Q.push_back(q);
+          m_Boundary.push_back(cross);
+          return;
+        }
+        m_Q.pop_back();
+        m_Boundary.pop_back();
+      }
+      m_Q.push_back(q);
+      m_Boundary.push_back(-Infinite);
+    };
+    if (outsideSites)
+      add(-1, 0.0);
+    for (long q = 0; q < n; ++q)
+      if (f[std::size_t(q)] < Infinite)
+        add(q, f[std::size_t(q)]);
+    if (outsideSites)
+      add(n, 0.0);
+    best.assign(std::size_t(n), Infinite);
+    from.assign(std::size_t(n), -2);
+    if (m_Q.empty())
+      return;
+    std::size_t piece = 0;
+    for (long p = 0; p < n; ++p)
+    {
+      while (piece + 1 < m_Q.size() && m_Boundary[piece + 1] <= double(p))
+        ++piece;
+      const long q = m_Q[piece];
+      const double fq = q < 0 || q >= n ? 0.0 : f[std::size_t(q)];
+      best[std::size_t(p)] = s2 * double(p - q) * double(p - q) + fq;
+      from[std::size_t(p)] = q;
+    }
+  }
+
+private:
+  std::vector<long> m_Q;          ///< the parabolas of the envelope, left to right
+  std::vector<double> m_Boundary; ///< where each starts to be the lowest
 };
 
 } // namespace
@@ -24,124 +87,82 @@ DistanceField DistanceInsideMask(const MaskGrid& mask,
                                  bool outsideIsBackground,
                                  float maximumDistanceMm)
 {
-  const float infinity = std::numeric_limits<float>::max();
+  // The exact Euclidean distance transform by separable passes along i, j and k, each the lower
+  // envelope of parabolas on a line (P. F. Felzenszwalb and D. P. Huttenlocher, "Distance
+  // transforms of sampled functions", Theory of Computing 8, 2012), carrying along each voxel's
+  // nearest site (the feature transform; C. R. Maurer, R. Qi, V. Raghavan, "A linear time
+  // algorithm for computing exact Euclidean distance transforms of binary images in arbitrary
+  // dimensions", IEEE PAMI 25, 2003). Sites are the background voxels and, when
+  // outsideIsBackground, the one-voxel shell around the box. Linear in the box's voxels.
+  const std::array<long, 3> n{ mask.size[0], mask.size[1], mask.size[2] };
+  const long count = mask.Count();
   DistanceField field;
-  field.distanceMm.assign(mask.voxels.size(), 0.0f);
-  field.nearestBackground.assign(mask.voxels.size(), { 0, 0, 0 });
-  std::vector<float>& distance = field.distanceMm;
+  field.nearestBackground.assign(std::size_t(count), { 0, 0, 0 });
   std::vector<std::array<int, 3>>& site = field.nearestBackground;
-  std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> queue;
-  const auto length = [&](const std::array<long, 3>& a, const std::array<int, 3>& b)
-  {
-    const double x = (a[0] - b[0]) * spacingMm[0], y = (a[1] - b[1]) * spacingMm[1], z = (a[2] - b[2]) * spacingMm[2];
-    return static_cast<float>(std::sqrt(x * x + y * y + z * z));
-  };
-  const auto outside = [&](long i, long j, long k)
-  { return i < 0 || j < 0 || k < 0 || i >= mask.size[0] || j >= mask.size[1] || k >= mask.size[2]; };
-  const auto isBackground = [&](long i, long j, long k)
-  { return outside(i, j, k) ? outsideIsBackground : !mask.voxels[mask.Flat(i, j, k)]; };
-
-  // Seeds: each foreground voxel with a background 26-neighbour, at the distance to the nearest
-  // one. Found from whichever side is smaller: the band outside a lumen is mostly foreground.
-  const auto offer = [&](long flat, const std::array<long, 3>& p, const std::array<long, 3>& q)
-  {
-    const float d = length(p, { int(q[0]), int(q[1]), int(q[2]) });
-    if (d < distance[flat])
+  // Squared distances (mm²) until the last step; float is exact enough: at 100 mm, 0.001 mm.
+  std::vector<float>& squared = field.distanceMm;
+  squared.assign(std::size_t(count), std::numeric_limits<float>::infinity());
+  for (long flat = 0; flat < count; ++flat)
+    if (!mask.voxels[flat])
     {
-      distance[flat] = d;
-      site[flat] = { int(q[0]), int(q[1]), int(q[2]) };
+      const auto ijk = mask.Ijk(flat);
+      squared[std::size_t(flat)] = 0.0f;
+      site[std::size_t(flat)] = { int(ijk[0]), int(ijk[1]), int(ijk[2]) };
     }
-  };
-  long foreground = 0;
-  for (long flat = 0; flat < mask.Count(); ++flat)
-    if (mask.voxels[flat])
-    {
-      distance[flat] = infinity;
-      ++foreground;
-    }
-  const bool fromBackground = mask.Count() - foreground < foreground;
-  for (long flat = 0, k = 0; k < mask.size[2]; ++k)
-    for (long j = 0; j < mask.size[1]; ++j)
-      for (long i = 0; i < mask.size[0]; ++i, ++flat)
+  const std::array<long, 3> stride{ 1, n[0], n[0] * n[1] };
+  LineTransform transform;
+  std::vector<double> f, best;
+  std::vector<long> from;
+  std::vector<std::array<int, 3>> lineSites;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    // The two axes that index the lines, u the faster: neighbouring lines share cache lines.
+    const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
+    const long length = n[axis];
+    f.resize(std::size_t(length));
+    lineSites.resize(std::size_t(length));
+    for (long b = 0; b < n[v]; ++b)
+      for (long a = 0; a < n[u]; ++a)
       {
-        const bool fg = mask.voxels[flat] != 0;
-        const std::array<long, 3> p{ i, j, k };
-        const bool border = p[0] == 0 || p[1] == 0 || p[2] == 0 || p[0] == mask.size[0] - 1 ||
-                            p[1] == mask.size[1] - 1 || p[2] == mask.size[2] - 1;
-        // From the background side, a foreground voxel still has to look outside the box itself.
-        if (fg && (fromBackground ? !(border && outsideIsBackground) : false))
+        const long start = a * stride[u] + b * stride[v];
+        // A line of background only (distance 0 throughout) stays as it is: most lines of a
+        // lumen's bounding box.
+        bool foreground = false;
+        for (long q = 0; q < length && !foreground; ++q)
+          foreground = mask.voxels[start + q * stride[axis]] != 0;
+        if (!foreground)
           continue;
-        if (!fg && !fromBackground)
-          continue;
-        for (int dk = -1; dk <= 1; ++dk)
-          for (int dj = -1; dj <= 1; ++dj)
-            for (int di = -1; di <= 1; ++di)
-            {
-              const std::array<long, 3> q{ p[0] + di, p[1] + dj, p[2] + dk };
-              if (fg)
-              {
-                if ((fromBackground ? outside(q[0], q[1], q[2]) && outsideIsBackground
-                                    : isBackground(q[0], q[1], q[2])))
-                  offer(flat, p, q);
-              }
-              else if (!outside(q[0], q[1], q[2]) && mask.voxels[mask.Flat(q[0], q[1], q[2])])
-              {
-                offer(mask.Flat(q[0], q[1], q[2]), q, p);
-              }
-            }
+        for (long q = 0; q < length; ++q)
+        {
+          f[std::size_t(q)] = squared[std::size_t(start + q * stride[axis])];
+          lineSites[std::size_t(q)] = site[std::size_t(start + q * stride[axis])];
+        }
+        transform.Run(f, spacingMm[axis], outsideIsBackground, best, from);
+        for (long p = 0; p < length; ++p)
+        {
+          const long flat = start + p * stride[axis];
+          squared[std::size_t(flat)] = static_cast<float>(best[std::size_t(p)]);
+          const long q = from[std::size_t(p)];
+          if (q == -2)
+            continue;
+          if (q < 0 || q >= length)
+          {
+            // The virtual site in the shell: straight across this axis from the voxel itself.
+            std::array<int, 3> s{};
+            s[std::size_t(axis)] = int(q);
+            s[std::size_t(u)] = int(a);
+            s[std::size_t(v)] = int(b);
+            site[std::size_t(flat)] = s;
+          }
+          else
+          {
+            site[std::size_t(flat)] = lineSites[std::size_t(q)];
+          }
+        }
       }
-  for (long flat = 0; flat < mask.Count(); ++flat)
-    if (mask.voxels[flat] && distance[flat] < infinity)
-      queue.push({ distance[flat], flat });
-
-  std::array<std::array<int, 3>, 27> neighbour{};
-  std::array<long, 27> offset{};
-  for (int m = 0; m < 27; ++m)
-  {
-    neighbour[m] = { m % 3 - 1, (m / 3) % 3 - 1, m / 9 - 1 };
-    offset[m] = neighbour[m][0] + mask.size[0] * (neighbour[m][1] + mask.size[1] * neighbour[m][2]);
   }
-  while (!queue.empty())
-  {
-    const Candidate c = queue.top();
-    queue.pop();
-    if (c.distance > distance[c.voxel])
-      continue;
-    const auto p = mask.Ijk(c.voxel);
-    const std::array<int, 3> from = site[c.voxel];
-    // Away from the box's faces every neighbour is in the box: flat offsets, no bounds checks.
-    const bool interior =
-      p[0] > 0 && p[1] > 0 && p[2] > 0 && p[0] < mask.size[0] - 1 && p[1] < mask.size[1] - 1 && p[2] < mask.size[2] - 1;
-    for (int m = 0; m < 27; ++m)
-    {
-      if (m == 13)
-        continue; // the voxel itself
-      const std::array<long, 3> q{ p[0] + neighbour[m][0], p[1] + neighbour[m][1], p[2] + neighbour[m][2] };
-      long n = 0;
-      if (interior)
-      {
-        n = c.voxel + offset[m];
-        if (!mask.voxels[n])
-          continue;
-      }
-      else
-      {
-        if (outside(q[0], q[1], q[2]) || isBackground(q[0], q[1], q[2]))
-          continue;
-        n = mask.Flat(q[0], q[1], q[2]);
-      }
-      const float d = length(q, from);
-      if (d < distance[n] && d <= maximumDistanceMm)
-      {
-        distance[n] = d;
-        site[n] = from;
-        queue.push({ d, n });
-      }
-    }
-  }
-  for (float& d : distance)
-    if (d == infinity)
-      d = maximumDistanceMm; // beyond the band, or no background at all
+  for (float& d : squared)
+    d = std::min(std::sqrt(d), maximumDistanceMm); // no site at all: infinity, hence the maximum
   return field;
 }
 

@@ -195,9 +195,8 @@ std::vector<int> LabelComponents(const MaskGrid& mask, std::vector<long>& sizes)
 
 void FillHoles(MaskGrid& mask)
 {
-  // Flood the outside from a one-voxel shell of background around the box. In the padded grid
-  // every voxel of the box has all six neighbours, so a step is a flat offset with no bounds
-  // check (a step that wraps across a row only ever joins shell voxels, which are all outside).
+  // Flood the outside from a one-voxel shell of background around the box (so the outside is one
+  // connected region that touches every face of the box).
   const long px = mask.size[0] + 2, py = mask.size[1] + 2, pz = mask.size[2] + 2;
   const long count = px * py * pz;
   enum : std::uint8_t
@@ -214,20 +213,36 @@ void FillHoles(MaskGrid& mask)
       for (long i = 0; i < mask.size[0]; ++i)
         state[padded + i] = mask.voxels[row + i] ? Foreground : Unreached;
     }
-  const long steps[6] = { 1, -1, px, -px, px * py, -px * py };
+  // A scanline fill: each pop marks a whole run of a row, and pushes one voxel per unreached run
+  // of the four rows beside it (a stack of runs, not of voxels).
   std::vector<long> stack{ 0 };
-  state[0] = Outside;
   while (!stack.empty())
   {
     const long v = stack.back();
     stack.pop_back();
-    for (const long step : steps)
+    if (state[v] != Unreached)
+      continue;
+    const long rowStart = v - v % px, rowEnd = rowStart + px;
+    long first = v, last = v + 1;
+    while (first > rowStart && state[first - 1] == Unreached)
+      --first;
+    while (last < rowEnd && state[last] == Unreached)
+      ++last;
+    std::fill(state.begin() + first, state.begin() + last, std::uint8_t(Outside));
+    const long row = rowStart / px, j = row % py, k = row / py;
+    const long besideRows[4][2] = { { j - 1, k }, { j + 1, k }, { j, k - 1 }, { j, k + 1 } };
+    for (const auto& beside : besideRows)
     {
-      const long n = v + step;
-      if (n >= 0 && n < count && state[n] == Unreached)
+      if (beside[0] < 0 || beside[0] >= py || beside[1] < 0 || beside[1] >= pz)
+        continue;
+      const long shift = px * (beside[0] + py * beside[1]) - rowStart;
+      bool inRun = false;
+      for (long n = first + shift; n < last + shift; ++n)
       {
-        state[n] = Outside;
-        stack.push_back(n);
+        const bool open = state[n] == Unreached;
+        if (open && !inRun)
+          stack.push_back(n);
+        inRun = open;
       }
     }
   }
@@ -244,32 +259,43 @@ void FillHoles(MaskGrid& mask)
 void FillSurfacePits(MaskGrid& mask, int minimumFaceNeighbours)
 {
   std::vector<long> pits;
-  for (long flat = 0; flat < mask.Count(); ++flat)
-  {
-    if (mask.voxels[flat])
-      continue;
-    const std::array<long, 3> ijk = mask.Ijk(flat);
-    int neighbours = 0;
-    for (const FaceStep& step : faceSteps)
-    {
-      const long n = FaceNeighbour(mask, ijk, step);
-      neighbours += n >= 0 && mask.voxels[n];
-    }
-    if (neighbours >= minimumFaceNeighbours)
-      pits.push_back(flat);
-  }
+  const long nx = mask.size[0], ny = mask.size[1], nz = mask.size[2], slice = nx * ny;
+  const std::uint8_t* v = mask.voxels.data();
+  for (long k = 0; k < nz; ++k)
+    for (long j = 0; j < ny; ++j)
+      for (long i = 0, flat = nx * (j + ny * k); i < nx; ++i, ++flat)
+      {
+        if (v[flat])
+          continue;
+        const int neighbours = (i > 0 && v[flat - 1]) + (i + 1 < nx && v[flat + 1]) + (j > 0 && v[flat - nx]) +
+                               (j + 1 < ny && v[flat + nx]) + (k > 0 && v[flat - slice]) +
+                               (k + 1 < nz && v[flat + slice]);
+        if (neighbours >= minimumFaceNeighbours)
+          pits.push_back(flat);
+      }
   for (const long flat : pits)
     mask.voxels[flat] = 1;
 }
 
 void GrowConstrained(MaskGrid& mask, const std::vector<bool>& accept, int steps)
 {
+  // The first front is the mask's boundary: an interior voxel has no background face to grow into.
   std::vector<long> front;
   for (long flat = 0; flat < mask.Count(); ++flat)
   {
-    if (mask.voxels[flat])
+    if (!mask.voxels[flat])
     {
-      front.push_back(flat);
+      continue;
+    }
+    const std::array<long, 3> ijk = mask.Ijk(flat);
+    for (const FaceStep& faceStep : faceSteps)
+    {
+      const long n = FaceNeighbour(mask, ijk, faceStep);
+      if (n >= 0 && !mask.voxels[n])
+      {
+        front.push_back(flat);
+        break;
+      }
     }
   }
   std::vector<long> next;

@@ -436,10 +436,22 @@ void RefineBoundary(MaskGrid& lumen,
   // Within refineDistanceMm of the grown region in millimetres, on every axis: counted in face
   // steps of the finest spacing, the reach along 2.5 mm slices was 3 slices, 7.5 mm — into an
   // enhancing renal vein above or below the lumen (16 % of it on 0.7 × 0.7 × 2.5 mm).
-  const MaskGrid within = Dilate(lumen, reachBall);
+  // Only the few voxels in the window outside the lumen look for a lumen voxel within the ball
+  // (no box-sized dilated copy of the lumen: 38 MiB and a third of this stage on 512 × 512 × 400).
+  const auto withinReach = [&](long flat)
+  {
+    const long i = flat % nx, j = (flat / nx) % ny, k = flat / slice;
+    for (const auto& d : reachBall)
+    {
+      const long a = i + d[0], b = j + d[1], c = k + d[2];
+      if (a >= 0 && b >= 0 && c >= 0 && a < nx && b < ny && c < nz && lumen.voxels[a + nx * (b + ny * c)])
+        return true;
+    }
+    return false;
+  };
   for (long flat = 0; flat < lumen.Count(); ++flat)
   {
-    accept[flat] = within.voxels[flat] && hu[flat] >= result.edgeHu && hu[flat] <= result.upperHu;
+    accept[flat] = !lumen.voxels[flat] && hu[flat] >= result.edgeHu && hu[flat] <= result.upperHu && withinReach(flat);
   }
   // Not into a calcium's or bone's blurred rim either (as GrowFromSeed).
   for (long flat = 0; flat < lumen.Count(); ++flat)

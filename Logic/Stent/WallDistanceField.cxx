@@ -96,14 +96,20 @@ WallDistanceField WallDistanceField::FromLumen(const LabelImage& lumen, double b
   }
   MaskGrid inside(box.size), outside(box.size);
   const auto size = lumen.GetLargestPossibleRegion().GetSize();
-  for (long flat = 0; flat < inside.Count(); ++flat)
-  {
-    const auto b = inside.Ijk(flat);
-    const long i = box.first[0] + b[0], j = box.first[1] + b[1], k = box.first[2] + b[2];
-    const bool inImage = i >= 0 && j >= 0 && k >= 0 && i < long(size[0]) && j < long(size[1]) && k < long(size[2]);
-    inside.voxels[flat] = inImage && lumen.GetBufferPointer()[i + long(size[0]) * (j + long(size[1]) * k)] ? 1 : 0;
-    outside.voxels[flat] = inside.voxels[flat] ? 0 : 1;
-  }
+  const unsigned char* buffer = lumen.GetBufferPointer();
+  for (long k = 0, flat = 0; k < box.size[2]; ++k)
+    for (long j = 0; j < box.size[1]; ++j)
+    {
+      const long gj = box.first[1] + j, gk = box.first[2] + k;
+      const bool rowInImage = gj >= 0 && gk >= 0 && gj < long(size[1]) && gk < long(size[2]);
+      for (long i = 0; i < box.size[0]; ++i, ++flat)
+      {
+        const long gi = box.first[0] + i;
+        const bool inImage = rowInImage && gi >= 0 && gi < long(size[0]);
+        inside.voxels[flat] = inImage && buffer[gi + long(size[0]) * (gj + long(size[1]) * gk)] ? 1 : 0;
+        outside.voxels[flat] = inside.voxels[flat] ? 0 : 1;
+      }
+    }
   const std::array<double, 3> s{ spacing[0], spacing[1], spacing[2] };
   // The two propagations are independent: the inner one runs on a second thread (the machine
   // we plan on has two cores; the result does not depend on the order).
@@ -117,19 +123,27 @@ WallDistanceField WallDistanceField::FromLumen(const LabelImage& lumen, double b
   field.m_Size = box.size;
   field.m_Band = bandMm;
   field.m_Phi.resize(inside.voxels.size());
-  for (long flat = 0; flat < inside.Count(); ++flat)
-  {
-    const bool lumenVoxel = inside.voxels[flat] != 0;
-    const DistanceField& d = lumenVoxel ? in : out;
-    const auto p = inside.Ijk(flat);
-    const auto& q = d.nearestBackground[flat];
-    Eigen::Vector3d u((q[0] - p[0]) * s[0], (q[1] - p[1]) * s[1], (q[2] - p[2]) * s[2]);
-    const double halfVoxel =
-      u.norm() > 0 ? 0.5 * (u[0] * u[0] * s[0] + u[1] * u[1] * s[1] + u[2] * u[2] * s[2]) / u.squaredNorm() : 0.0;
-    const double distance = d.distanceMm[flat];
-    const double phi = lumenVoxel ? -(distance - halfVoxel) : distance - halfVoxel;
-    field.m_Phi[flat] = static_cast<float>(std::clamp(phi, -bandMm, bandMm));
-  }
+  // A voxel farther than the band plus half a voxel is ±band whatever its direction.
+  const double farMm = bandMm + 0.5 * std::max({ s[0], s[1], s[2] });
+  for (long k = 0, flat = 0; k < box.size[2]; ++k)
+    for (long j = 0; j < box.size[1]; ++j)
+      for (long i = 0; i < box.size[0]; ++i, ++flat)
+      {
+        const bool lumenVoxel = inside.voxels[flat] != 0;
+        const DistanceField& d = lumenVoxel ? in : out;
+        const double distance = d.distanceMm[flat];
+        if (distance >= farMm)
+        {
+          field.m_Phi[flat] = static_cast<float>(lumenVoxel ? -bandMm : bandMm);
+          continue;
+        }
+        const auto& q = d.nearestBackground[flat];
+        const Eigen::Vector3d u((q[0] - i) * s[0], (q[1] - j) * s[1], (q[2] - k) * s[2]);
+        const double halfVoxel =
+          u.norm() > 0 ? 0.5 * (u[0] * u[0] * s[0] + u[1] * u[1] * s[1] + u[2] * u[2] * s[2]) / u.squaredNorm() : 0.0;
+        const double phi = lumenVoxel ? -(distance - halfVoxel) : distance - halfVoxel;
+        field.m_Phi[flat] = static_cast<float>(std::clamp(phi, -bandMm, bandMm));
+      }
   itk::ContinuousIndex<double, 3> first;
   for (unsigned a = 0; a < 3; ++a)
     first[a] = double(box.first[a]);

@@ -1,12 +1,14 @@
 #include "Wall/VesselWall.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <Eigen/Dense>
 
 #include "Centerlines/VesselOrigins.h"
 #include "Common/CheckRange.h"
+#include "Common/IndexBox.h"
 #include "Common/Median.h"
 
 namespace sgp
@@ -90,27 +92,18 @@ VesselWall TraceVesselWall(const CtImage& ct,
 CtImage::Pointer CropAroundLumen(const CtImage& ct, const LabelImage& lumen, double marginMm)
 {
   const itk::Size<3> size = lumen.GetLargestPossibleRegion().GetSize();
-  long lo[3] = { long(size[0]), long(size[1]), long(size[2]) }, hi[3] = { -1, -1, -1 };
-  const unsigned char* m = lumen.GetBufferPointer();
-  std::size_t n = 0;
-  for (long k = 0; k < long(size[2]); ++k)
-    for (long j = 0; j < long(size[1]); ++j)
-      for (long i = 0; i < long(size[0]); ++i, ++n)
-        if (m[n])
-        {
-          lo[0] = std::min(lo[0], i), hi[0] = std::max(hi[0], i);
-          lo[1] = std::min(lo[1], j), hi[1] = std::max(hi[1], j);
-          lo[2] = std::min(lo[2], k), hi[2] = std::max(hi[2], k);
-        }
+  std::array<long, 3> margin{};
+  for (int a = 0; a < 3; ++a)
+    margin[a] = static_cast<long>(std::ceil(marginMm / ct.GetSpacing()[a]));
+  IndexBox box = ForegroundBox(lumen, margin);
+  if (box.Empty()) // no lumen: the margin around the first voxel
+    box = PaddedBox({ 0, 0, 0 }, { 0, 0, 0 }, margin, size);
   itk::Index<3> start;
   itk::Size<3> cropSize;
   for (int a = 0; a < 3; ++a)
   {
-    if (hi[a] < 0)
-      lo[a] = hi[a] = 0;
-    const long margin = static_cast<long>(std::ceil(marginMm / ct.GetSpacing()[a]));
-    start[a] = std::max(0L, lo[a] - margin);
-    cropSize[a] = static_cast<itk::SizeValueType>(std::min(long(size[a]) - 1, hi[a] + margin) - start[a] + 1);
+    start[a] = box.first[a];
+    cropSize[a] = static_cast<itk::SizeValueType>(box.size[a]);
   }
   CtImage::Pointer crop = CtImage::New();
   itk::Point<double, 3> origin;

@@ -1,5 +1,6 @@
 // Tests of the binary-mask operations against masks whose answer is counted by hand.
 #include <algorithm>
+#include <random>
 
 #include <gtest/gtest.h>
 
@@ -80,6 +81,90 @@ TEST(MaskGrid, FillHoles_FillsCavityNotTunnel)
   EXPECT_EQ(filled.voxels[filled.Flat(4, 4, 4)], 1);
   EXPECT_EQ(filled.voxels[filled.Flat(4, 2, 2)], 0);
   EXPECT_EQ(filled.CountForeground(), shell.CountForeground() + 1);
+}
+
+// The scanline fill against the definition, voxel by voxel: a background voxel stays background
+// exactly when a 6-connected background path joins it to the box's border. Random masks at several
+// densities (sparse: one big outside; dense: many cavities, winding tunnels, runs split by walls),
+// on boxes that are thin along each axis in turn.
+TEST(MaskGrid, FillHoles_EqualsBorderConnectedBackgroundOnRandomMasks)
+{
+  std::mt19937 random(20261201);
+  const std::array<long, 3> boxes[] = { { 13, 11, 9 }, { 1, 12, 10 }, { 12, 1, 10 }, { 12, 10, 1 }, { 2, 2, 30 } };
+  long cavities = 0;
+  for (const auto& box : boxes)
+    for (const double density : { 0.2, 0.5, 0.65, 0.8 })
+    {
+      MaskGrid mask(box);
+      std::bernoulli_distribution foreground(density);
+      for (auto& v : mask.voxels)
+        v = foreground(random) ? 1 : 0;
+      // Reference: breadth-first from every border background voxel.
+      std::vector<char> outside(static_cast<std::size_t>(mask.Count()), 0);
+      std::vector<long> queue;
+      for (long flat = 0; flat < mask.Count(); ++flat)
+      {
+        const auto ijk = mask.Ijk(flat);
+        bool border = false;
+        for (unsigned a = 0; a < 3; ++a)
+          border = border || ijk[a] == 0 || ijk[a] == box[a] - 1;
+        if (border && !mask.voxels[flat])
+        {
+          outside[flat] = 1;
+          queue.push_back(flat);
+        }
+      }
+      for (std::size_t head = 0; head < queue.size(); ++head)
+      {
+        const auto ijk = mask.Ijk(queue[head]);
+        for (unsigned a = 0; a < 3; ++a)
+          for (const long d : { -1L, 1L })
+          {
+            auto n = ijk;
+            n[a] += d;
+            if (n[a] < 0 || n[a] >= box[a])
+              continue;
+            const long flat = mask.Flat(n[0], n[1], n[2]);
+            if (!mask.voxels[flat] && !outside[flat])
+            {
+              outside[flat] = 1;
+              queue.push_back(flat);
+            }
+          }
+      }
+      MaskGrid filled = mask;
+      FillHoles(filled);
+      for (long flat = 0; flat < mask.Count(); ++flat)
+      {
+        const int expected = (mask.voxels[flat] || !outside[flat]) ? 1 : 0;
+        ASSERT_EQ(filled.voxels[flat], expected)
+          << "voxel " << flat << " of a " << box[0] << "x" << box[1] << "x" << box[2] << " box at density " << density;
+        cavities += expected && !mask.voxels[flat];
+      }
+    }
+  EXPECT_GT(cavities, 50); // the draws hold enough enclosed background for the comparison to mean something
+}
+
+// Pits at the box's faces count only the neighbours inside the box.
+TEST(MaskGrid, FillSurfacePits_CountsOnlyNeighboursInsideTheBox)
+{
+  MaskGrid slab({ 5, 5, 2 });
+  for (long j = 0; j < 5; ++j)
+    for (long i = 0; i < 5; ++i)
+      slab.voxels[slab.Flat(i, j, 0)] = 1;
+  slab.voxels[slab.Flat(2, 2, 0)] = 0; // a pit in the layer
+  slab.voxels[slab.Flat(0, 0, 0)] = 0; // a pit at the corner
+  MaskGrid filled = slab;
+  FillSurfacePits(filled, 5);
+  EXPECT_EQ(filled.voxels[filled.Flat(2, 2, 0)], 0); // layer k = 1 is background: only 4 of its faces
+  for (long j = 0; j < 5; ++j)
+    for (long i = 0; i < 5; ++i)
+      slab.voxels[slab.Flat(i, j, 1)] = 1;
+  slab.voxels[slab.Flat(2, 2, 0)] = 0;
+  filled = slab;
+  FillSurfacePits(filled, 5);
+  EXPECT_EQ(filled.voxels[filled.Flat(2, 2, 0)], 1); // 4 in-plane + 1 above = 5 (below is outside the box)
+  EXPECT_EQ(filled.voxels[filled.Flat(0, 0, 0)], 0); // 2 in-plane + 1 above = 3
 }
 
 TEST(MaskGrid, GrowConstrained_StopsAfterStepsAndAtRejectedVoxels)
