@@ -1,6 +1,7 @@
 #include "Centerlines/SkeletonGraph.h"
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <numeric>
 #include <set>
@@ -28,6 +29,11 @@ struct WorkGraph
 {
   SkeletonGraph graph;
   std::vector<bool> nodeRemoved, edgeRemoved;
+  // The image's geometry, for the border test: its first voxel centre (LPS mm), its unit axes
+  // (LPS), the distance from the first to the last voxel centre along each axis and the spacing.
+  Point3 firstVoxelLps = Point3::Zero();
+  std::array<Point3, 3> axisLps{ Point3::UnitX(), Point3::UnitY(), Point3::UnitZ() };
+  std::array<double, 3> imageExtentMm{ 0, 0, 0 }, spacingMm{ 0, 0, 0 };
 
   int AddNode(const Point3& p, double r)
   {
@@ -57,6 +63,21 @@ struct WorkGraph
     }
   }
 
+  /// Whether the ball reaches the image's first or last voxel centre on some axis, within one
+  /// voxel (ThinLabelMap continues a vessel cut by the border beyond it, so its skeleton ends on
+  /// the border's voxel layer).
+  bool BallReachesBorder(const Point3& centre, double radiusMm) const
+  {
+    for (unsigned a = 0; a < 3; ++a)
+    {
+      const double fromFirst = (centre - firstVoxelLps).dot(axisLps[a]);
+      const double toLast = imageExtentMm[a] - fromFirst;
+      if (std::min(fromFirst, toLast) <= radiusMm + spacingMm[a])
+        return true;
+    }
+    return false;
+  }
+
   /// Removes spurs; returns whether any was removed.
   bool PruneSpurs(const SkeletonGraphParams& params)
   {
@@ -72,7 +93,9 @@ struct WorkGraph
       const int junction = da == 1 ? edge.b : edge.a;
       const double limit =
         std::max(params.minimumSpurLengthMm, params.spurLengthRatio * graph.nodes[junction].radiusMm);
-      if (edge.lengthMm < limit)
+      // A terminal edge cut by the image's border is a vessel the scan cuts, whatever its length.
+      const SkeletonGraph::Node& end = graph.nodes[da == 1 ? edge.a : edge.b];
+      if (edge.lengthMm < limit && !BallReachesBorder(end.position, end.radiusMm))
         spurs.push_back(e);
     }
     for (int e : spurs)
@@ -346,6 +369,19 @@ SkeletonGraph BuildSkeletonGraph(const Skeleton& skeleton,
     throw InputError("The skeleton is empty; the lumen mask had no voxel to thin.");
   const Adjacency neighbours = SkeletonAdjacency(skeleton, reference);
   WorkGraph work;
+  {
+    itk::Point<double, 3> first;
+    reference.TransformIndexToPhysicalPoint(itk::Index<3>{ { 0, 0, 0 } }, first);
+    work.firstVoxelLps = Point3(first[0], first[1], first[2]);
+    const auto size = reference.GetLargestPossibleRegion().GetSize();
+    for (unsigned a = 0; a < 3; ++a)
+    {
+      for (unsigned r = 0; r < 3; ++r)
+        work.axisLps[a][r] = reference.GetDirection()(r, a);
+      work.spacingMm[a] = reference.GetSpacing()[a];
+      work.imageExtentMm[a] = (double(size[a]) - 1.0) * work.spacingMm[a];
+    }
+  }
   const std::vector<int> nodeOf = AddNodes(skeleton, neighbours, work);
   TraceEdges(skeleton, neighbours, nodeOf, work);
   for (bool changed = true; changed;)

@@ -1,6 +1,8 @@
 #include "Centerlines/ThinLabelMap.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <numeric>
 
 #include "Centerlines/SimplePoint.h"
@@ -31,6 +33,29 @@ std::uint32_t Neighbourhood(const MaskGrid& grid, long flat)
   return bits;
 }
 
+/// Voxels by which the image's border layer `layer` along `axis` is repeated outward: a little
+/// more than the radius of what the border cuts (half the larger in-plane extent of the layer's
+/// foreground, at most 40 mm) plus two voxels, so that the closed-off end of the extension —
+/// where a skeleton bends — lies a radius outside the image; 0 when nothing touches that layer.
+long BorderExtension(const LabelImage& mask, const IndexBox& found, unsigned axis, long layer)
+{
+  const auto size = mask.GetLargestPossibleRegion().GetSize();
+  const unsigned u = (axis + 1) % 3, w = (axis + 2) % 3;
+  std::array<long, 3> lo{ long(size[0]), long(size[1]), long(size[2]) }, hi{ -1, -1, -1 };
+  std::array<long, 3> g{};
+  g[axis] = layer;
+  for (g[w] = found.first[w]; g[w] < found.first[w] + found.size[w]; ++g[w])
+    for (g[u] = found.first[u]; g[u] < found.first[u] + found.size[u]; ++g[u])
+      if (mask.GetBufferPointer()[g[0] + long(size[0]) * (g[1] + long(size[1]) * g[2])])
+        for (const unsigned a : { u, w })
+          lo[a] = std::min(lo[a], g[a]), hi[a] = std::max(hi[a], g[a]);
+  if (hi[u] < 0)
+    return 0;
+  const auto spacing = mask.GetSpacing();
+  const double extentMm = std::max((hi[u] - lo[u] + 1) * spacing[u], (hi[w] - lo[w] + 1) * spacing[w]);
+  return static_cast<long>(std::ceil(std::min(0.5 * extentMm, 40.0) / spacing[axis])) + 2;
+}
+
 } // namespace
 
 Skeleton ThinLabelMap(const LabelImage& mask, const ProgressCallback& progress)
@@ -40,19 +65,35 @@ Skeleton ThinLabelMap(const LabelImage& mask, const ProgressCallback& progress)
   {
     throw InputError("The lumen mask is empty (no non-zero voxel); nothing to thin.");
   }
-  // One voxel of background padding on every side (beyond the image's edge too), so that every
+  // A vessel the image's border cuts continues beyond it: its voxels on the border layer are
+  // repeated outward (BorderExtension), so that its skeleton runs on its axis to the border and
+  // its radius there is its own, not the distance to the border. Closed off at the border, a cut
+  // vessel thins into a curve that ends a radius short of it and bends toward the cut face's rim
+  // — or, cut less than a radius above a branch, into no curve at all, and the aorta's skeleton
+  // ran on into the coeliac. Then one voxel of background on every side, so that every
   // foreground voxel has a full neighbourhood inside the box.
-  const std::array<long, 3> lo = found.first;
-  MaskGrid box({ found.size[0] + 2, found.size[1] + 2, found.size[2] + 2 });
-  ForEachInBox(found, mask.GetLargestPossibleRegion().GetSize(),
-               [&](long flat, long image)
-               {
-                 const long i = flat % found.size[0], j = (flat / found.size[0]) % found.size[1];
-                 const long k = flat / (found.size[0] * found.size[1]);
-                 box.voxels[box.Flat(i + 1, j + 1, k + 1)] = mask.GetBufferPointer()[image] ? 1 : 0;
-               });
-  ReportProgress(progress, 0.05, "Distance map");
+  const auto size = mask.GetLargestPossibleRegion().GetSize();
   const auto spacing = mask.GetSpacing();
+  std::array<long, 3> before{}, after{}, boxSize{}, base{};
+  for (unsigned a = 0; a < 3; ++a)
+  {
+    before[a] = found.first[a] == 0 ? BorderExtension(mask, found, a, 0) : 0;
+    after[a] = found.first[a] + found.size[a] == long(size[a]) ? BorderExtension(mask, found, a, long(size[a]) - 1) : 0;
+    boxSize[a] = found.size[a] + before[a] + after[a] + 2;
+    base[a] = found.first[a] - before[a] - 1; // image index of the box's voxel 0
+  }
+  MaskGrid box(boxSize);
+  const unsigned char* data = mask.GetBufferPointer();
+  for (long k = 1; k + 1 < boxSize[2]; ++k)
+    for (long j = 1; j + 1 < boxSize[1]; ++j)
+      for (long i = 1; i + 1 < boxSize[0]; ++i)
+      {
+        std::array<long, 3> g{ base[0] + i, base[1] + j, base[2] + k };
+        for (unsigned a = 0; a < 3; ++a)
+          g[a] = std::clamp(g[a], 0L, long(size[a]) - 1); // the extensions repeat the border layer
+        box.voxels[box.Flat(i, j, k)] = data[g[0] + long(size[0]) * (g[1] + long(size[1]) * g[2])] ? 1 : 0;
+      }
+  ReportProgress(progress, 0.05, "Distance map");
   const std::array<double, 3> spacingMm{ spacing[0], spacing[1], spacing[2] };
   const DistanceField field = DistanceInsideMask(box, spacingMm);
 
@@ -84,15 +125,69 @@ Skeleton ThinLabelMap(const LabelImage& mask, const ProgressCallback& progress)
     order.erase(std::remove_if(order.begin(), order.end(), [&](long v) { return !box.voxels[v]; }), order.end());
   }
 
+  // The skeleton of the extensions goes. What it leaves inside the image in pieces of its own,
+  // every voxel within an extension's length of the border, is the skeleton of the extension
+  // (an oblique vessel's elongated cut, repeated outward, thins into a surface whose border-layer
+  // remnants are not a vessel) and goes too.
+  const auto nearBorder = [&](const std::array<long, 3>& b)
+  {
+    for (unsigned a = 0; a < 3; ++a)
+    {
+      const long g = base[a] + b[a];
+      if ((before[a] > 0 && g < before[a]) || (after[a] > 0 && long(size[a]) - 1 - g < after[a]))
+        return true;
+    }
+    return false;
+  };
+  const auto insideImage = [&](const std::array<long, 3>& b)
+  {
+    for (unsigned a = 0; a < 3; ++a)
+      if (base[a] + b[a] < 0 || base[a] + b[a] >= long(size[a]))
+        return false;
+    return true;
+  };
+  MaskGrid kept(box.size);
+  for (long v = 0; v < box.Count(); ++v)
+    kept.voxels[v] = box.voxels[v] && insideImage(box.Ijk(v)) ? 1 : 0;
+  if (before != std::array<long, 3>{ 0, 0, 0 } || after != std::array<long, 3>{ 0, 0, 0 })
+  {
+    std::vector<bool> seen(std::size_t(kept.Count()), false);
+    for (long start = 0; start < kept.Count(); ++start)
+    {
+      if (!kept.voxels[start] || seen[std::size_t(start)])
+        continue;
+      std::vector<long> piece{ start }; // its 26-connected piece, breadth first
+      seen[std::size_t(start)] = true;
+      for (std::size_t head = 0; head < piece.size(); ++head)
+      {
+        const auto b = kept.Ijk(piece[head]);
+        for (long dk = -1; dk <= 1; ++dk)
+          for (long dj = -1; dj <= 1; ++dj)
+            for (long di = -1; di <= 1; ++di)
+            {
+              const long n = kept.Flat(b[0] + di, b[1] + dj, b[2] + dk); // the box's shell is background
+              if (kept.voxels[n] && !seen[std::size_t(n)])
+              {
+                seen[std::size_t(n)] = true;
+                piece.push_back(n);
+              }
+            }
+      }
+      if (std::all_of(piece.begin(), piece.end(), [&](long v) { return nearBorder(kept.Ijk(v)); }))
+        for (const long v : piece)
+          kept.voxels[v] = 0;
+    }
+  }
+
   Skeleton skeleton;
   for (const long v : order)
   {
-    if (!box.voxels[v])
+    if (!kept.voxels[v])
       continue;
     const auto b = box.Ijk(v);
-    const itk::Index<3> index{ { lo[0] + b[0] - 1, lo[1] + b[1] - 1, lo[2] + b[2] - 1 } };
+    const itk::Index<3> index{ { base[0] + b[0], base[1] + b[1], base[2] + b[2] } };
     const auto& q = field.nearestBackground[v];
-    const itk::Index<3> background{ { lo[0] + q[0] - 1, lo[1] + q[1] - 1, lo[2] + q[2] - 1 } };
+    const itk::Index<3> background{ { base[0] + q[0], base[1] + q[1], base[2] + q[2] } };
     skeleton.voxels.push_back(index);
     skeleton.pointsLps.push_back(IndexToLps(mask, index));
     skeleton.radiusMm.push_back(field.distanceMm[v]);

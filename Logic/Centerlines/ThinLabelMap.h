@@ -15,9 +15,13 @@
 /// removes a voxel.
 ///
 /// Input: any non-zero voxel of `mask` is foreground (any grid; spacing honoured). The work is
-/// done in the mask's bounding box. Output: skeleton voxels (image index and LPS mm) with the
-/// radius in mm — the distance to the nearest background voxel centre — and that background
-/// voxel's centre (AssignInscribedRadii uses it to measure radii off the voxel grid).
+/// done in the mask's bounding box. Where the foreground touches the image's border, the border
+/// layer is repeated outward by a little more than the radius it cuts, and the skeleton found
+/// there dropped: a vessel the scan cuts keeps its skeleton on its axis up to the border (its
+/// end voxel lies on the border layer) with its own radius, instead of a closed-off end that
+/// thins a radius short of the border, bent toward the rim of the cut. Output: skeleton voxels (image index and LPS mm)
+/// with the radius in mm — the distance to the nearest background voxel centre — and that background voxel's centre
+/// (AssignInscribedRadii uses it to measure radii off the voxel grid).
 ///
 /// Guarantees: skeleton ⊂ mask; every skeleton voxel is non-simple or a curve end (so no 2×2×2
 /// block survives in practice, which the tests check); same number of 26-connected components

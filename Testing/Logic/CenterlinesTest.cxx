@@ -1,4 +1,8 @@
 // The labelled Y on the aneurysm phantom, against its analytic axes and radii.
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
 #include <gtest/gtest.h>
 
 #include "Centerlines/SmoothCenterline.h"
@@ -129,6 +133,80 @@ TEST_F(AneurysmPhantomCenterlines, VesselsRunTheRightWay)
   const Centerline* renal = tree->FindVessel("rightRenal");
   EXPECT_LT(renal->points(renal->Size() - 1, 0), -50.0);
 }
+
+/// The slices of `ct` at or below LPS z = `topZ` (the phantom's grid is axis-aligned, z up, its
+/// origin in the lowest slice): a scan whose field of view ends there.
+CtImage::Pointer CropAbove(const CtImage& ct, double topZ)
+{
+  const auto size = ct.GetLargestPossibleRegion().GetSize();
+  const double z0 = ct.GetOrigin()[2], dz = ct.GetSpacing()[2];
+  const auto slices = static_cast<itk::SizeValueType>(std::floor((topZ - z0) / dz + 1e-9)) + 1;
+  auto crop = CtImage::New();
+  crop->CopyInformation(&ct);
+  crop->SetRegions(CtImage::SizeType{ { size[0], size[1], std::min(slices, size[2]) } });
+  crop->Allocate();
+  std::copy_n(ct.GetBufferPointer(), crop->GetLargestPossibleRegion().GetNumberOfPixels(), crop->GetBufferPointer());
+  return crop;
+}
+
+// A scan that ends 5–25 mm above the coeliac artery (the aortic radius is 12.5 mm): the aorta's
+// stump above the branch was pruned as a spur, or thinned into nothing, and `aorta` ran on into the
+// coeliac, its top 20 mm up to 30 mm off the aortic axis. Now the aorta runs on its axis to the
+// top slice. Every point above the truth's bifurcation within 1 mm of the analytic axis (the
+// issue's bar); below it the skeleton's junction sits in the crotch, up to 2.5 mm lower, and is
+// held to the same 1 mm sideways.
+class ScanEndingAboveTheCoeliac : public ::testing::TestWithParam<double>
+{
+protected:
+  static void SetUpTestSuite() { phantom = new AorticPhantom(GenerateAorticPhantom(PhantomParams{})); }
+  static void TearDownTestSuite() { delete phantom; }
+  static AorticPhantom* phantom;
+};
+AorticPhantom* ScanEndingAboveTheCoeliac::phantom = nullptr;
+
+TEST_P(ScanEndingAboveTheCoeliac, AortaOnItsAxisToTheTopSlice)
+{
+  const PhantomTruth& truth = phantom->truth;
+  const auto landmark = [&](const std::string& name)
+  {
+    for (const PhantomLandmark& l : truth.landmarks)
+      if (l.name == name)
+        return l.lps;
+    throw std::runtime_error("no truth landmark " + name);
+  };
+  const double coeliacZ = landmark("coeliacOstium").z(), bifurcationZ = landmark("aorticBifurcation").z();
+  const CtImage::Pointer ct = CropAbove(*phantom->ct, coeliacZ + GetParam());
+  const double topSliceZ =
+    ct->GetOrigin()[2] + ct->GetSpacing()[2] * double(ct->GetLargestPossibleRegion().GetSize()[2] - 1);
+  const CenterlineTree tree = testing::CenterlinesFromCt(*ct, truth.seedLps);
+  const Centerline& aorta = tree.aorta;
+  const Points& axis = truth.vessels.front().axis; // the aorta's
+  double worst = 0.0, top = -1e9;
+  for (Eigen::Index i = 0; i < aorta.Size(); ++i)
+  {
+    const Point3 p = aorta.points.row(i).transpose();
+    top = std::max(top, p.z());
+    const double off = p.z() >= bifurcationZ
+                         ? testing::DistanceToAxis(p, axis).first
+                         : std::hypot(p.x() - axis(axis.rows() - 1, 0), p.y() - axis(axis.rows() - 1, 1));
+    worst = std::max(worst, off);
+  }
+  EXPECT_LT(worst, 1.0);
+  // It reaches the top slice (one slice: the smoothing keeps the ends where they are).
+  EXPECT_GT(top, topSliceZ - ct->GetSpacing()[2] - 1e-6);
+  EXPECT_LT(top, topSliceZ + 1e-6);
+  // And the coeliac, when its origin is in view, is not part of it.
+  if (GetParam() >= 10.0)
+  {
+    const Centerline* coeliac = tree.FindVessel("coeliac");
+    ASSERT_NE(coeliac, nullptr);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(MillimetresAbove,
+                         ScanEndingAboveTheCoeliac,
+                         ::testing::Values(5.0, 10.0, 15.0, 20.0, 25.0),
+                         [](const auto& info) { return std::to_string(int(info.param)) + "mm"; });
 
 TEST(LabelAortoIliacTree, ScanEndingAboveTheIliacs_NoBifurcationError)
 {

@@ -1,4 +1,6 @@
 // Tests of the skeleton graph on skeletons drawn voxel by voxel, whose graph is known.
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "Centerlines/SkeletonGraph.h"
@@ -53,7 +55,9 @@ TEST(SkeletonGraph, ShortSpur_PrunedAndLineJoined)
   auto voxels = Line({ 10, 40, 40 }, { 1, 0, 0 }, 41);    // 40 mm along x
   const auto spur = Line({ 30, 41, 40 }, { 0, 1, 0 }, 6); // 6 mm < 2 × radius 5
   voxels.insert(voxels.end(), spur.begin(), spur.end());
-  const DrawnSkeleton drawn(voxels, 5.0);
+  DrawnSkeleton drawn(voxels, 5.0);
+  for (int i = 0; i < 6; ++i) // a hair: it narrows from the axis to the wall
+    drawn.skeleton.radiusMm[std::size_t(41 + i)] = 4.5 - 0.7 * i;
   const SkeletonGraph g = BuildSkeletonGraph(drawn.skeleton, *drawn.grid);
   ASSERT_EQ(g.nodes.size(), 2u);
   ASSERT_EQ(g.edges.size(), 1u);
@@ -78,6 +82,32 @@ TEST(SkeletonGraph, LongBranch_KeptAsThirdEdge)
     total += e.lengthMm;
   EXPECT_NEAR(total, 40.0 + 20.0, 0.5); // the junction's four voxels are replaced by their mean
   EXPECT_EQ(g.CountComponents(), 1);
+}
+
+/// A straight line of radius 5 along x (y = `lineY`) with a branch of `branchLength` voxels along
+/// −y from x = 30, whose radii run linearly from `branchFrom` at the junction to `branchTo`.
+DrawnSkeleton LineWithBranch(long lineY, int branchLength, double branchFrom, double branchTo)
+{
+  auto voxels = Line({ 10, lineY, 40 }, { 1, 0, 0 }, 41);
+  const auto branch = Line({ 30, lineY - 1, 40 }, { 0, -1, 0 }, branchLength);
+  voxels.insert(voxels.end(), branch.begin(), branch.end());
+  DrawnSkeleton drawn(voxels, 5.0);
+  for (int i = 0; i < branchLength; ++i)
+    drawn.skeleton.radiusMm[std::size_t(41 + i)] =
+      branchFrom + (branchTo - branchFrom) * double(i) / double(std::max(1, branchLength - 1));
+  return drawn;
+}
+
+// A hair shorter than the spur length (8 mm < 2 × 5 mm), narrowing from the axis to the wall, is
+// pruned; the same hair ending on the image's border (y = 0) is a vessel the scan cuts: kept.
+// One voxel short of the border's reach (end radius 0.8 mm, 1 mm spacing: the ball reaches the
+// border layer when the end lies within 1.8 mm of it) it is pruned.
+TEST(SkeletonGraph, ShortNarrowingBranch_KeptWhenCutByTheImageBorder)
+{
+  const DrawnSkeleton cut = LineWithBranch(8, 8, 4.5, 0.8); // branch voxels y = 7 … 0
+  EXPECT_EQ(CountDegree(BuildSkeletonGraph(cut.skeleton, *cut.grid), 1), 3);
+  const DrawnSkeleton inside = LineWithBranch(10, 8, 4.5, 0.8); // ends at y = 2: 2 mm > 1.8 mm
+  EXPECT_EQ(CountDegree(BuildSkeletonGraph(inside.skeleton, *inside.grid), 1), 2);
 }
 
 TEST(SkeletonGraph, TwoJunctionsFourMillimetresApart_MergedInAWideVessel)
