@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
@@ -54,7 +55,8 @@ std::vector<T> SplitNumbers(const std::string& text, const std::string& flag, st
     char* end = nullptr;
     errno = 0;
     const double value = std::strtod(item.c_str(), &end);
-    if (item.empty() || end != item.c_str() + item.size() || errno == ERANGE)
+    // strtod reads "nan" and "inf" too: not a coordinate or a parameter.
+    if (item.empty() || end != item.c_str() + item.size() || errno == ERANGE || !std::isfinite(value))
     {
       throw ParseError("--" + flag + " got '" + text + "': '" + item +
                        "' is not a number; expected comma-separated numbers, for example 1.5,-20,33");

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs every test (GoogleTest unit tests, the SEM/Slicer
-# protocol tests of the CLIs). Usage: scripts/test.sh [ctest arguments…] (default: -LE benchmark)
+# protocol tests of the CLIs), then the unit and CLI tests once more in a sanitizer build
+# (AddressSanitizer, UndefinedBehaviorSanitizer; SGP_SANITIZERS=0 skips it).
+# Usage: scripts/test.sh [ctest arguments…] (default: -LE benchmark)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
@@ -18,3 +20,20 @@ if [ $# -eq 0 ]; then
   set -- -LE benchmark
 fi
 ctest --output-on-failure -j 2 "$@"
+
+# The same unit and CLI tests built with AddressSanitizer and UndefinedBehaviorSanitizer, in a
+# second folder (RelWithDebInfo: optimised, with line numbers in the reports); any report fails
+# the run. Only on the default run (no ctest arguments given), or with SGP_SANITIZERS=1.
+if [ "$#" -eq 2 ] && [ "$1" = "-LE" ] && [ "$2" = "benchmark" ] || [ "${SGP_SANITIZERS:-}" = "1" ]; then
+  if [ "${SGP_SANITIZERS:-}" != "0" ]; then
+    echo "== Sanitizer build (address, undefined) in $SGP_ROOT/build-sanitize"
+    SGP_BUILD="$SGP_ROOT/build-sanitize" sgp_build -DSGP_WERROR=$werror -DBUILD_TESTING=ON \
+      -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSGP_SANITIZE=address,undefined -DSGP_BUILD_BENCHMARKS=OFF
+    echo "== Running the unit and CLI tests under the sanitizers"
+    cd "$SGP_ROOT/build-sanitize"
+    export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:detect_stack_use_after_return=1:allocator_may_return_null=1"
+    export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+    export LSAN_OPTIONS="suppressions=$SGP_ROOT/Testing/Sanitizers/lsan.supp:print_suppressions=0"
+    ctest --output-on-failure -j 2 -L 'unit|cli'
+  fi
+fi

@@ -342,6 +342,33 @@ std::vector<std::string> NameAorticBranches(const SkeletonGraph& graph,
   return names;
 }
 
+/// What the scan covers, for the no-bifurcation error: its z extent, and the vessels its inferior
+/// border cuts (a scan that ends above the bifurcation, or too little below it to follow both
+/// iliacs `minimumIliacDescentMm` down). Ends with "; ".
+std::string ScanCoverage(const SkeletonGraph& graph, const CenterlineParams& params)
+{
+  std::string text = "the scan spans z " + FormatNumber(graph.scanLowestZMm, 1) + " to " +
+                     FormatNumber(graph.scanHighestZMm, 1) + " mm (LPS, inferior to superior)";
+  int cut = 0, widest = -1;
+  for (int n = 0; n < int(graph.nodes.size()); ++n)
+  {
+    const SkeletonGraph::Node& node = graph.nodes[n];
+    if (node.atBorder && node.position.z() - graph.scanLowestZMm <= node.radiusMm + 3.0)
+    {
+      ++cut;
+      if (widest < 0 || node.radiusMm > graph.nodes[widest].radiusMm)
+        widest = n;
+    }
+  }
+  if (cut == 0)
+    return text + "; ";
+  return text + ", and its inferior border cuts " + std::to_string(cut) + (cut == 1 ? " vessel" : " vessels") +
+         " (the widest " + FormatNumber(2.0 * graph.nodes[widest].radiusMm, 1) + " mm across at " +
+         FormatPoint(graph.nodes[widest].position) + " mm LPS): the scan ends above the aortic bifurcation, or less " +
+         "than " + FormatNumber(params.minimumIliacDescentMm, 0) +
+         " mm below it, too little of the iliacs to tell the Y (plans on such scans are not made yet); ";
+}
+
 } // namespace
 
 void ValidateCenterlineParams(const CenterlineParams& params)
@@ -377,7 +404,8 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
   if (candidates.empty())
   {
     throw AlgorithmError("No aortic bifurcation found in the lumen skeleton (" + found +
-                         "); expected a junction with the aorta above and an iliac artery to each side below; "
+                         "); expected a junction with the aorta above and an iliac artery to each side below; " +
+                         ScanCoverage(graph, params) +
                          "check that the scan covers the common iliac arteries and the seed lies in the aorta.");
   }
   const Bifurcation& y = candidates.front();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <set>
@@ -390,7 +391,21 @@ SkeletonGraph BuildSkeletonGraph(const Skeleton& skeleton,
     changed = work.DissolveDegreeTwo() || changed;
     changed = work.MergeCloseJunctions(params) || changed;
   }
-  return work.Compact();
+  SkeletonGraph out = work.Compact();
+  for (SkeletonGraph::Node& node : out.nodes)
+    node.atBorder = node.edges.size() == 1 && work.BallReachesBorder(node.position, node.radiusMm);
+  out.scanLowestZMm = std::numeric_limits<double>::infinity();
+  out.scanHighestZMm = -out.scanLowestZMm;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    Point3 p = work.firstVoxelLps;
+    for (unsigned a = 0; a < 3; ++a)
+      if (corner & (1 << a))
+        p += work.imageExtentMm[a] * work.axisLps[a];
+    out.scanLowestZMm = std::min(out.scanLowestZMm, p.z());
+    out.scanHighestZMm = std::max(out.scanHighestZMm, p.z());
+  }
+  return out;
 }
 
 } // namespace sgp

@@ -51,6 +51,7 @@ struct SkeletonGraph
     Point3 position;        ///< LPS mm
     double radiusMm = 0.0;  ///< inscribed radius at the node
     std::vector<int> edges; ///< incident edges
+    bool atBorder = false;  ///< an end whose inscribed ball reaches the image's border (a cut vessel)
   };
   struct Edge
   {
@@ -61,6 +62,9 @@ struct SkeletonGraph
   };
   std::vector<Node> nodes;
   std::vector<Edge> edges;
+  /// The image's extent along LPS z (inferior to superior): the lowest and highest z of its
+  /// corner voxel centres, mm; for error messages about what the scan covers.
+  double scanLowestZMm = 0.0, scanHighestZMm = 0.0;
 
   int Degree(int node) const { return static_cast<int>(nodes[node].edges.size()); }
   int Other(int edge, int node) const { return edges[edge].a == node ? edges[edge].b : edges[edge].a; }

@@ -1,6 +1,7 @@
 #include "IO/ReadCtImage.h"
 
 #include <filesystem>
+#include <new>
 
 #include <itkGDCMImageIO.h>
 #include <itkGDCMSeriesFileNames.h>
@@ -9,6 +10,7 @@
 #include <itkImageSeriesReader.h>
 
 #include "Common/Errors.h"
+#include "Common/Format.h"
 #include "IO/RegisterImageIOFactories.h"
 
 namespace sgp
@@ -101,6 +103,14 @@ itk::ImageIOBase::Pointer OpenVolumeFile(const std::string& path)
     throw InputError("The input volume '" + path + "' is " + std::to_string(sizes.size()) + "-D (" + SizeText(sizes) +
                      "); expected a 3-D CT volume.");
   }
+  // A header that declares more voxels than any CT this tool plans on (2^32: 8.6 GB of HU) is
+  // corrupt or not a CT; refused before the reader allocates for it.
+  const double voxels = double(sizes[0]) * double(sizes[1]) * double(sizes[2]);
+  if (voxels > 4294967296.0)
+  {
+    throw InputError("The input volume '" + path + "' declares " + SizeText(sizes) + " (" +
+                     FormatNumber(voxels / 1e9, 1) + " billion); expected at most 4.3 billion (a corrupt header?).");
+  }
   if (io->GetNumberOfComponents() != 1)
   {
     throw InputError("The input volume '" + path + "' has " + std::to_string(io->GetNumberOfComponents()) +
@@ -136,6 +146,11 @@ CtVolume ReadCtImage(const std::string& path)
     throw InputError("Cannot read the input volume '" + path + "': " + FirstLine(e.GetDescription()) +
                      "; give a readable 3-D CT volume.");
   }
+  catch (const std::bad_alloc&)
+  {
+    throw InputError("Cannot read the input volume '" + path +
+                     "': its voxels do not fit in this machine's memory; give a smaller or cropped volume.");
+  }
   return volume;
 }
 
@@ -150,6 +165,10 @@ LabelImage::Pointer ReadLabelMap(const std::string& path)
   {
     throw InputError("Cannot read the label map '" + path + "': " + FirstLine(e.GetDescription()) +
                      "; give a readable 3-D label map.");
+  }
+  catch (const std::bad_alloc&)
+  {
+    throw InputError("Cannot read the label map '" + path + "': its voxels do not fit in this machine's memory.");
   }
 }
 

@@ -231,6 +231,11 @@ DeviceCatalog ParseDeviceCatalog(const std::string& text, const std::string& ori
     throw InputError("Device catalogue '" + origin + "' is not valid JSON: " + JsonErrorMessage(e.what()) +
                      "; fix the syntax there (often a missing comma, quote or bracket).");
   }
+  catch (const Json::exception& e) // e.g. a number beyond a double (1e309): out_of_range 406
+  {
+    throw InputError("Device catalogue '" + origin + "' cannot be read: " + JsonErrorMessage(e.what()) +
+                     "; write every number as a finite decimal.");
+  }
   EntryReader top(origin, -1);
   if (!json.is_object())
     top.Fail("(top level)", "is " + DescribeJsonValue(json), "an object with formatVersion and families");

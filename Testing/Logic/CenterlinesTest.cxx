@@ -8,6 +8,7 @@
 #include "Centerlines/SmoothCenterline.h"
 #include "CenterlineTestSupport.h"
 #include "Common/Errors.h"
+#include "Common/Format.h"
 #include "MaskPhantoms.h"
 #include "PipelineSupport.h"
 
@@ -207,6 +208,67 @@ INSTANTIATE_TEST_SUITE_P(MillimetresAbove,
                          ScanEndingAboveTheCoeliac,
                          ::testing::Values(5.0, 10.0, 15.0, 20.0, 25.0),
                          [](const auto& info) { return std::to_string(int(info.param)) + "mm"; });
+
+/// The slices of `ct` at or above LPS z = `bottomZ` (axis-aligned, z up): a scan that ends there.
+CtImage::Pointer CropBelow(const CtImage& ct, double bottomZ)
+{
+  const auto size = ct.GetLargestPossibleRegion().GetSize();
+  const double z0 = ct.GetOrigin()[2], dz = ct.GetSpacing()[2];
+  const auto first = static_cast<itk::SizeValueType>(std::max(0.0, std::ceil((bottomZ - z0) / dz - 1e-9)));
+  auto crop = CtImage::New();
+  crop->CopyInformation(&ct);
+  auto origin = ct.GetOrigin();
+  origin[2] += double(first) * dz;
+  crop->SetOrigin(origin);
+  crop->SetRegions(CtImage::SizeType{ { size[0], size[1], size[2] - first } });
+  crop->Allocate();
+  std::copy_n(ct.GetBufferPointer() + first * size[0] * size[1], crop->GetLargestPossibleRegion().GetNumberOfPixels(),
+              crop->GetBufferPointer());
+  return crop;
+}
+
+// A scan that ends in the sac (30 mm above the bifurcation) or just below the bifurcation (5 mm):
+// no made-up Y, and the error says what the scan covers — its z extent and the vessels its
+// inferior border cuts — instead of only "no bifurcation".
+class ScanEndingNearTheBifurcation : public ::testing::TestWithParam<double>
+{
+protected:
+  static void SetUpTestSuite() { phantom = new AorticPhantom(GenerateAorticPhantom(PhantomParams{})); }
+  static void TearDownTestSuite() { delete phantom; }
+  static AorticPhantom* phantom;
+};
+AorticPhantom* ScanEndingNearTheBifurcation::phantom = nullptr;
+
+TEST_P(ScanEndingNearTheBifurcation, NoBifurcationErrorNamesTheCoverage)
+{
+  double bifurcationZ = 0.0;
+  for (const PhantomLandmark& l : phantom->truth.landmarks)
+    if (l.name == "aorticBifurcation")
+      bifurcationZ = l.lps.z();
+  const CtImage::Pointer ct = CropBelow(*phantom->ct, bifurcationZ + GetParam());
+  const double lowestZ = ct->GetOrigin()[2];
+  try
+  {
+    testing::CenterlinesFromCt(*ct, phantom->truth.seedLps);
+    ADD_FAILURE() << "no error: a Y was named on a scan ending " << GetParam() << " mm from the bifurcation";
+  }
+  catch (const AlgorithmError& e)
+  {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("No aortic bifurcation found"), std::string::npos) << message;
+    EXPECT_NE(message.find("the scan spans z " + FormatNumber(lowestZ, 1) + " to "), std::string::npos) << message;
+    EXPECT_NE(message.find("its inferior border cuts"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(MillimetresFromTheBifurcation,
+                         ScanEndingNearTheBifurcation,
+                         ::testing::Values(30.0, -5.0),
+                         [](const auto& info) {
+                           return (info.param < 0 ? "Below" : "Above") + std::to_string(int(std::abs(info.param))) +
+                                  "mm";
+                         });
 
 TEST(LabelAortoIliacTree, ScanEndingAboveTheIliacs_NoBifurcationError)
 {
