@@ -147,12 +147,12 @@ Skeleton ThinLabelMap(const LabelImage& mask, const ProgressCallback& progress)
     return true;
   };
   MaskGrid kept(box.size);
-  for (long v = 0; v < box.Count(); ++v)
+  for (const long v : order)
     kept.voxels[v] = box.voxels[v] && insideImage(box.Ijk(v)) ? 1 : 0;
   if (before != std::array<long, 3>{ 0, 0, 0 } || after != std::array<long, 3>{ 0, 0, 0 })
   {
     std::vector<bool> seen(std::size_t(kept.Count()), false);
-    for (long start = 0; start < kept.Count(); ++start)
+    for (const long start : order)
     {
       if (!kept.voxels[start] || seen[std::size_t(start)])
         continue;

@@ -437,7 +437,7 @@ void RefineBoundary(MaskGrid& lumen,
   // steps of the finest spacing, the reach along 2.5 mm slices was 3 slices, 7.5 mm — into an
   // enhancing renal vein above or below the lumen (16 % of it on 0.7 × 0.7 × 2.5 mm).
   // Only the few voxels in the window outside the lumen look for a lumen voxel within the ball
-  // (no box-sized dilated copy of the lumen: 38 MiB and a third of this stage on 512 × 512 × 400).
+  // (no box-sized dilated copy of the lumen, which cost 38 MiB of peak memory on 512 × 512 × 1000).
   const auto withinReach = [&](long flat)
   {
     const long i = flat % nx, j = (flat / nx) % ny, k = flat / slice;
