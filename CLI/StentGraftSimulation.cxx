@@ -19,6 +19,7 @@
 #include "Pipeline/PlanRepair.h"
 #include "Pipeline/PlanValues.h"
 #include "PrintPlanSummary.h"
+#include "QuietStderr.h"
 #include "SlicerProgress.h"
 #include "StentGraftSimulationCLP.h"
 #include "StentGraftSimulationParameters.h"
@@ -94,7 +95,8 @@ int main(int argc, char* argv[])
                                          { "SimulateGraft", 1.0 },
                                          { "WriteOutputs", 1.0 } });
     progress.Begin("ReadVolume", "Reading the CT volume");
-    CtVolume volume = ReadCtImage(inputVolume);
+    // ITK's readers' own prints are dropped: a failure is our one ERROR: line (QuietStderr.h).
+    CtVolume volume = clp::WithStderrDropped([&] { return ReadCtImage(inputVolume); });
     PrintWarnings(volume.warnings, std::cerr);
 
     // `labelMapWritten` is declared after `outputs`, so on an exception it is waited for before

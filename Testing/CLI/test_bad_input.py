@@ -29,6 +29,7 @@ import json
 import os
 import random
 import shutil
+import struct
 import subprocess
 import sys
 
@@ -200,6 +201,26 @@ def main():
     with open(garbage, "wb") as handle:
         handle.write(bytes(random.Random(0).getrandbits(8) for _ in range(4096)))
     bad_case(cli, workdir, "unreadable-file", garbage, valid_seed, [garbage])
+
+    # Headers that ITK's bundled readers complain about on stderr themselves (NIfTI: "** ERROR:
+    # nifti_convert_nhdr2nim: bad datatype"; MetaIO: "MetaImage: Read: Cannot parse file"): still
+    # exactly one line, ours (the reader fuzz test found the extra lines).
+    nifti = os.path.join(workdir, "bad-datatype.nii")
+    header = bytearray(352)
+    struct.pack_into("<i", header, 0, 348)                              # sizeof_hdr
+    struct.pack_into("<8h", header, 40, 3, 8, 8, 8, 1, 1, 1, 1)          # dim
+    struct.pack_into("<hh", header, 70, 9999, 16)                       # datatype (none such), bitpix
+    struct.pack_into("<8f", header, 76, 1, 1, 1, 1, 1, 1, 1, 1)          # pixdim
+    struct.pack_into("<f", header, 108, 352.0)                          # vox_offset
+    header[344:348] = b"n+1\0"
+    with open(nifti, "wb") as handle:
+        handle.write(bytes(header) + bytes(8 * 8 * 8 * 2))
+    bad_case(cli, workdir, "nifti-bad-datatype", nifti, valid_seed, [nifti])
+    meta = os.path.join(workdir, "no-dimsize.mha")
+    with open(meta, "wb") as handle:
+        handle.write(b"ObjectType = Image\nNDims = 3\nElementType = MET_SHORT\nElementDataFile = LOCAL\n")
+        handle.write(bytes(64))
+    bad_case(cli, workdir, "metaimage-without-dimsize", meta, valid_seed, [meta])
 
     flat = os.path.join(workdir, "flat-2d.nrrd")
     with open(flat, "wb") as handle:
