@@ -29,6 +29,18 @@ long FaceNeighbour(const MaskGrid& grid, const std::array<long, 3>& ijk, const F
   return grid.Flat(n[0], n[1], n[2]);
 }
 
+/// Whether a face neighbour of the voxel is background or outside the box: the mask's boundary.
+bool HasBackgroundFace(const MaskGrid& grid, const std::array<long, 3>& ijk)
+{
+  for (const FaceStep& step : faceSteps)
+  {
+    const long n = FaceNeighbour(grid, ijk, step);
+    if (n < 0 || !grid.voxels[n])
+      return true;
+  }
+  return false;
+}
+
 bool InBox(const MaskGrid& grid, long i, long j, long k)
 {
   return i >= 0 && j >= 0 && k >= 0 && i < grid.size[0] && j < grid.size[1] && k < grid.size[2];
@@ -128,13 +140,7 @@ MaskGrid Dilate(const MaskGrid& mask, const std::vector<std::array<int, 3>>& bal
     }
     const std::array<long, 3> ijk = mask.Ijk(flat);
     // Interior voxels (all six faces foreground) add nothing that their neighbours do not.
-    bool boundary = false;
-    for (const FaceStep& step : faceSteps)
-    {
-      const long n = FaceNeighbour(mask, ijk, step);
-      boundary = boundary || n < 0 || !mask.voxels[n];
-    }
-    if (!boundary)
+    if (!HasBackgroundFace(mask, ijk))
     {
       continue;
     }
@@ -282,22 +288,8 @@ void GrowConstrained(MaskGrid& mask, const std::vector<bool>& accept, int steps)
   // The first front is the mask's boundary: an interior voxel has no background face to grow into.
   std::vector<long> front;
   for (long flat = 0; flat < mask.Count(); ++flat)
-  {
-    if (!mask.voxels[flat])
-    {
-      continue;
-    }
-    const std::array<long, 3> ijk = mask.Ijk(flat);
-    for (const FaceStep& faceStep : faceSteps)
-    {
-      const long n = FaceNeighbour(mask, ijk, faceStep);
-      if (n >= 0 && !mask.voxels[n])
-      {
-        front.push_back(flat);
-        break;
-      }
-    }
-  }
+    if (mask.voxels[flat] && HasBackgroundFace(mask, mask.Ijk(flat)))
+      front.push_back(flat);
   std::vector<long> next;
   for (int step = 0; step < steps && !front.empty(); ++step)
   {

@@ -135,20 +135,55 @@ TEST_F(AneurysmPhantomCenterlines, VesselsRunTheRightWay)
   EXPECT_LT(renal->points(renal->Size() - 1, 0), -50.0);
 }
 
-/// The slices of `ct` at or below LPS z = `topZ` (the phantom's grid is axis-aligned, z up, its
-/// origin in the lowest slice): a scan whose field of view ends there.
-CtImage::Pointer CropAbove(const CtImage& ct, double topZ)
+/// Slices `first` … `first + count − 1` of `ct` (the phantom's grid is axis-aligned, z up): a scan
+/// whose field of view ends there.
+CtImage::Pointer CropSlices(const CtImage& ct, itk::SizeValueType first, itk::SizeValueType count)
 {
   const auto size = ct.GetLargestPossibleRegion().GetSize();
-  const double z0 = ct.GetOrigin()[2], dz = ct.GetSpacing()[2];
-  const auto slices = static_cast<itk::SizeValueType>(std::floor((topZ - z0) / dz + 1e-9)) + 1;
+  count = std::min(count, size[2] - first);
   auto crop = CtImage::New();
   crop->CopyInformation(&ct);
-  crop->SetRegions(CtImage::SizeType{ { size[0], size[1], std::min(slices, size[2]) } });
+  auto origin = ct.GetOrigin();
+  origin[2] += double(first) * ct.GetSpacing()[2];
+  crop->SetOrigin(origin);
+  crop->SetRegions(CtImage::SizeType{ { size[0], size[1], count } });
   crop->Allocate();
-  std::copy_n(ct.GetBufferPointer(), crop->GetLargestPossibleRegion().GetNumberOfPixels(), crop->GetBufferPointer());
+  std::copy_n(ct.GetBufferPointer() + first * size[0] * size[1], crop->GetLargestPossibleRegion().GetNumberOfPixels(),
+              crop->GetBufferPointer());
   return crop;
 }
+
+/// The slices at or below LPS z = `topZ`.
+CtImage::Pointer CropAbove(const CtImage& ct, double topZ)
+{
+  const double slices = std::floor((topZ - ct.GetOrigin()[2]) / ct.GetSpacing()[2] + 1e-9) + 1;
+  return CropSlices(ct, 0, static_cast<itk::SizeValueType>(slices));
+}
+
+/// The slices at or above LPS z = `bottomZ`.
+CtImage::Pointer CropBelow(const CtImage& ct, double bottomZ)
+{
+  const double first = std::max(0.0, std::ceil((bottomZ - ct.GetOrigin()[2]) / ct.GetSpacing()[2] - 1e-9));
+  return CropSlices(ct, static_cast<itk::SizeValueType>(first), ct.GetLargestPossibleRegion().GetSize()[2]);
+}
+
+/// The default phantom (generated once per test suite) for the cropped-scan tests, and its truth
+/// landmarks.
+class DefaultPhantomCropped : public ::testing::TestWithParam<double>
+{
+protected:
+  static void SetUpTestSuite() { phantom = new AorticPhantom(GenerateAorticPhantom(PhantomParams{})); }
+  static void TearDownTestSuite() { delete phantom; }
+  static double LandmarkZ(const std::string& name)
+  {
+    for (const PhantomLandmark& l : phantom->truth.landmarks)
+      if (l.name == name)
+        return l.lps.z();
+    throw std::runtime_error("no truth landmark " + name);
+  }
+  static AorticPhantom* phantom;
+};
+AorticPhantom* DefaultPhantomCropped::phantom = nullptr;
 
 // A scan that ends 5–25 mm above the coeliac artery (the aortic radius is 12.5 mm): the aorta's
 // stump above the branch was pruned as a spur, or thinned into nothing, and `aorta` ran on into the
@@ -156,26 +191,12 @@ CtImage::Pointer CropAbove(const CtImage& ct, double topZ)
 // top slice. Every point above the truth's bifurcation within 1 mm of the analytic axis (the
 // issue's bar); below it the skeleton's junction sits in the crotch, up to 2.5 mm lower, and is
 // held to the same 1 mm sideways.
-class ScanEndingAboveTheCoeliac : public ::testing::TestWithParam<double>
-{
-protected:
-  static void SetUpTestSuite() { phantom = new AorticPhantom(GenerateAorticPhantom(PhantomParams{})); }
-  static void TearDownTestSuite() { delete phantom; }
-  static AorticPhantom* phantom;
-};
-AorticPhantom* ScanEndingAboveTheCoeliac::phantom = nullptr;
+using ScanEndingAboveTheCoeliac = DefaultPhantomCropped;
 
 TEST_P(ScanEndingAboveTheCoeliac, AortaOnItsAxisToTheTopSlice)
 {
   const PhantomTruth& truth = phantom->truth;
-  const auto landmark = [&](const std::string& name)
-  {
-    for (const PhantomLandmark& l : truth.landmarks)
-      if (l.name == name)
-        return l.lps;
-    throw std::runtime_error("no truth landmark " + name);
-  };
-  const double coeliacZ = landmark("coeliacOstium").z(), bifurcationZ = landmark("aorticBifurcation").z();
+  const double coeliacZ = LandmarkZ("coeliacOstium"), bifurcationZ = LandmarkZ("aorticBifurcation");
   const CtImage::Pointer ct = CropAbove(*phantom->ct, coeliacZ + GetParam());
   const double topSliceZ =
     ct->GetOrigin()[2] + ct->GetSpacing()[2] * double(ct->GetLargestPossibleRegion().GetSize()[2] - 1);
@@ -209,43 +230,14 @@ INSTANTIATE_TEST_SUITE_P(MillimetresAbove,
                          ::testing::Values(5.0, 10.0, 15.0, 20.0, 25.0),
                          [](const auto& info) { return std::to_string(int(info.param)) + "mm"; });
 
-/// The slices of `ct` at or above LPS z = `bottomZ` (axis-aligned, z up): a scan that ends there.
-CtImage::Pointer CropBelow(const CtImage& ct, double bottomZ)
-{
-  const auto size = ct.GetLargestPossibleRegion().GetSize();
-  const double z0 = ct.GetOrigin()[2], dz = ct.GetSpacing()[2];
-  const auto first = static_cast<itk::SizeValueType>(std::max(0.0, std::ceil((bottomZ - z0) / dz - 1e-9)));
-  auto crop = CtImage::New();
-  crop->CopyInformation(&ct);
-  auto origin = ct.GetOrigin();
-  origin[2] += double(first) * dz;
-  crop->SetOrigin(origin);
-  crop->SetRegions(CtImage::SizeType{ { size[0], size[1], size[2] - first } });
-  crop->Allocate();
-  std::copy_n(ct.GetBufferPointer() + first * size[0] * size[1], crop->GetLargestPossibleRegion().GetNumberOfPixels(),
-              crop->GetBufferPointer());
-  return crop;
-}
-
 // A scan that ends in the sac (30 mm above the bifurcation) or just below the bifurcation (5 mm):
 // no made-up Y, and the error says what the scan covers — its z extent and the vessels its
 // inferior border cuts — instead of only "no bifurcation".
-class ScanEndingNearTheBifurcation : public ::testing::TestWithParam<double>
-{
-protected:
-  static void SetUpTestSuite() { phantom = new AorticPhantom(GenerateAorticPhantom(PhantomParams{})); }
-  static void TearDownTestSuite() { delete phantom; }
-  static AorticPhantom* phantom;
-};
-AorticPhantom* ScanEndingNearTheBifurcation::phantom = nullptr;
+using ScanEndingNearTheBifurcation = DefaultPhantomCropped;
 
 TEST_P(ScanEndingNearTheBifurcation, NoBifurcationErrorNamesTheCoverage)
 {
-  double bifurcationZ = 0.0;
-  for (const PhantomLandmark& l : phantom->truth.landmarks)
-    if (l.name == "aorticBifurcation")
-      bifurcationZ = l.lps.z();
-  const CtImage::Pointer ct = CropBelow(*phantom->ct, bifurcationZ + GetParam());
+  const CtImage::Pointer ct = CropBelow(*phantom->ct, LandmarkZ("aorticBifurcation") + GetParam());
   const double lowestZ = ct->GetOrigin()[2];
   try
   {

@@ -116,6 +116,15 @@ INSTANTIATE_TEST_SUITE_P(VesselWall,
                                            Grid{ "ThickSlices", { 0.7, 0.7, 2.5 }, 30.0, 1.5, 1.5 }),
                          [](const auto& info) { return std::string(info.param.name); });
 
+/// The plan through the measurements, with the wall label map the neighbour checks count on.
+RepairPlan MeasuredWithWallLabels(const AorticPhantom& phantom)
+{
+  PlanRequest request;
+  request.through = PlanStage::Measurements;
+  request.wallLabelMap = true;
+  return PlanRepair(phantom.ct, phantom.truth.seedLps, request, DefaultParams());
+}
+
 /// Voxels of `label` in the truth that the wall label map puts inside the outer wall (≥ 1).
 double FractionInside(const LabelImage& wallLabels, const LabelImage& truth, PhantomLabel label, long& count)
 {
@@ -143,10 +152,7 @@ TEST(VesselWall, NeighboursWithoutAFatPlane_FewerThanTwoPercentInsideAndNoNumber
   p.tissueHu = -100.0;
   p.includePsoas = p.includeIvc = p.includeDuodenum = p.includeLeftRenalVein = true;
   const AorticPhantom phantom = GenerateAorticPhantom(p);
-  PlanRequest request;
-  request.through = PlanStage::Measurements;
-  request.wallLabelMap = true;
-  const RepairPlan plan = PlanRepair(phantom.ct, phantom.truth.seedLps, request, DefaultParams());
+  const RepairPlan plan = MeasuredWithWallLabels(phantom);
   ASSERT_TRUE(plan.wallLabels);
   // Issue 12's bar, < 2 %, for each. (The enhancing left renal vein had 3.9 % inside: the lumen's
   // boundary refinement reached through the blurred wall into it; its reach is now 1.6 mm on
@@ -200,10 +206,7 @@ TEST_P(OneNeighbour, EveryOuterValueMeasuredWithinTheBarAndTheNeighbourOutside)
   p.includeDuodenum = GetParam() == DuodenumLabel;
   p.includeLeftRenalVein = GetParam() == RenalVeinLabel;
   const AorticPhantom phantom = GenerateAorticPhantom(p);
-  PlanRequest request;
-  request.through = PlanStage::Measurements;
-  request.wallLabelMap = true;
-  const RepairPlan plan = PlanRepair(phantom.ct, phantom.truth.seedLps, request, DefaultParams());
+  const RepairPlan plan = MeasuredWithWallLabels(phantom);
   ASSERT_TRUE(plan.wallLabels);
   long count = 0;
   const double inside = FractionInside(*plan.wallLabels, *phantom.labels, GetParam(), count);
