@@ -29,8 +29,8 @@ void PrintPlanSummary(const RepairPlan& plan, const std::string& acmMode, std::o
   const LumenSegmentation& lumen = plan.lumen;
   out << "Lumen: " << FormatNumber(lumen.volumeMl) << " mL; window " << FormatNumber(lumen.lowerHu, 0) << " to "
       << FormatNumber(lumen.upperHu, 0) << " HU (seed median " << FormatNumber(lumen.seedMedianHu, 0) << " HU, sigma "
-      << FormatNumber(lumen.seedSigmaHu, 0) << " HU); boundary at " << FormatNumber(lumen.edgeHu, 0) << " HU"
-      << std::endl;
+      << FormatNumber(lumen.seedSigmaHu, 0) << " HU, from " << lumen.windowSource << "); boundary at "
+      << FormatNumber(lumen.edgeHu, 0) << " HU" << std::endl;
   if (plan.Reached(PlanStage::Centerlines))
   {
     const CenterlineTree& tree = plan.centerlines;

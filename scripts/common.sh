@@ -13,7 +13,7 @@ SGP_PYTHON=/usr/bin/python3 # Debian's, with numpy; `python3` on the PATH may be
 SGP_PACKAGES=(
   cmake g++ make
   libinsighttoolkit5-dev libvtk9-dev libtclap-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev
-  python3 python3-numpy python3-skimage python3-jsonschema python3-vtk9 python3-pyflakes
+  python3 python3-numpy python3-scipy python3-skimage python3-jsonschema python3-vtk9 python3-pyflakes
   libgdcm-tools
 )
 

@@ -214,7 +214,17 @@ struct Bifurcation
   double score = 0.0;
 };
 
-std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph, const CenterlineParams& params)
+/// A junction with the shape of a Y that is refused as the bifurcation, and why.
+struct RefusedY
+{
+  int node = -1;
+  double score = 0.0; ///< as Bifurcation::score
+  std::string reason;
+};
+
+std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph,
+                                          const CenterlineParams& params,
+                                          std::vector<RefusedY>& refused)
 {
   std::vector<Bifurcation> found;
   for (int n = 0; n < int(graph.nodes.size()); ++n)
@@ -236,6 +246,7 @@ std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph, const Cent
     {
       if (up.direction.z() <= 0.5 || up.length < params.minimumBranchLengthMm)
         continue;
+      double aortaRadius = -1.0; // median along the vessel followed up, computed when needed
       for (const Branch& right : branches)
         for (const Branch& left : branches)
         {
@@ -244,25 +255,44 @@ std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph, const Cent
           // directions are compared with each other rather than with the x axis.
           const bool sides = left.direction.x() - right.direction.x() > 0.3;
           const bool long_ = right.length >= params.minimumIliacLengthMm && left.length >= params.minimumIliacLengthMm;
-          const auto descends = [&](int edge)
-          {
-            const VesselPath path = FollowVessel(graph, n, edge, {}, params.directionReachMm);
-            return path.points.back().z() <= graph.nodes[n].position.z() - params.minimumIliacDescentMm;
-          };
           // The iliacs are narrower than the aorta, but not much: this also rejects the arch in
           // a chest scan, whose two limbs go down under a narrow supra-aortic branch.
           const double minimum = params.minimumIliacRadiusRatio * up.radius;
           const bool wide =
             right.radius >= minimum && left.radius >= minimum && up.radius >= 0.8 * std::max(right.radius, left.radius);
-          if (lower && sides && long_ && wide && descends(right.edge) && descends(left.edge))
+          if (!(lower && sides && long_ && wide))
+            continue;
+          const VesselPath rightPath = FollowVessel(graph, n, right.edge, {}, params.directionReachMm);
+          const VesselPath leftPath = FollowVessel(graph, n, left.edge, {}, params.directionReachMm);
+          const double bottom = graph.nodes[n].position.z() - params.minimumIliacDescentMm;
+          if (rightPath.points.back().z() > bottom || leftPath.points.back().z() > bottom)
+            continue;
+          const double score = std::min(right.radius, left.radius);
+          // The aorta is the widest vessel of the Y over its length: a junction whose upper vessel
+          // is not clearly wider than each lower one is large vessels meeting (the aorta against
+          // the heart and the venae cavae, a leak's loops), not the aorta above its bifurcation.
+          // Whole vessels are compared, not their first centimetres: a common iliac aneurysm may be
+          // wider than the aorta just above it, never the iliac over its length (the external
+          // iliac is most of it).
+          if (aortaRadius < 0.0)
+            aortaRadius = Median(FollowVessel(graph, n, up.edge, {}, params.directionReachMm).radii);
+          const double iliacRadius = std::max(Median(rightPath.radii), Median(leftPath.radii));
+          if (aortaRadius < params.minimumAortaToIliacRatio * iliacRadius)
           {
-            const double score = std::min(right.radius, left.radius);
-            if (found.empty() || found.back().node != n || found.back().score < score)
-            {
-              if (!found.empty() && found.back().node == n)
-                found.pop_back();
-              found.push_back({ n, up.edge, right.edge, left.edge, score });
-            }
+            refused.push_back({ n, score,
+                                "the junction at " + FormatPoint(graph.nodes[n].position) +
+                                  " mm LPS has the shape of a Y, but the vessel above it (median " +
+                                  FormatNumber(2.0 * aortaRadius, 1) + " mm across) is not " +
+                                  FormatNumber(params.minimumAortaToIliacRatio, 1) + " times as wide as the ones " +
+                                  "below (up to " + FormatNumber(2.0 * iliacRadius, 1) +
+                                  " mm): large vessels meeting, not the aorta and its iliacs" });
+            continue;
+          }
+          if (found.empty() || found.back().node != n || found.back().score < score)
+          {
+            if (!found.empty() && found.back().node == n)
+              found.pop_back();
+            found.push_back({ n, up.edge, right.edge, left.edge, score });
           }
         }
     }
@@ -381,6 +411,7 @@ void ValidateCenterlineParams(const CenterlineParams& params)
   CheckRange("minimumIliacDescentMm", params.minimumIliacDescentMm, 0, 500, "mm");
   CheckRange("minimumIliacRadiusRatio", params.minimumIliacRadiusRatio, 0, 1, "");
   CheckRange("internalIliacRadiusRatio", params.internalIliacRadiusRatio, 0, 1, "");
+  CheckRange("minimumAortaToIliacRatio", params.minimumAortaToIliacRatio, 0, 10, "");
 }
 
 CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineParams& params)
@@ -400,12 +431,20 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
     throw AlgorithmError("The lumen skeleton breaks into " + std::to_string(pieces) + " pieces (" + found +
                          "); expected one connected aorto-iliac tree; check the segmentation for gaps.");
   }
-  const std::vector<Bifurcation> candidates = FindBifurcations(graph, params);
+  std::vector<RefusedY> refused;
+  const std::vector<Bifurcation> candidates = FindBifurcations(graph, params, refused);
   if (candidates.empty())
   {
+    std::string refusal;
+    if (!refused.empty())
+    {
+      const auto widest = std::max_element(refused.begin(), refused.end(),
+                                           [](const auto& a, const auto& b) { return a.score < b.score; });
+      refusal = widest->reason + "; ";
+    }
     throw AlgorithmError("No aortic bifurcation found in the lumen skeleton (" + found +
                          "); expected a junction with the aorta above and an iliac artery to each side below; " +
-                         ScanCoverage(graph, params) +
+                         refusal + ScanCoverage(graph, params) +
                          "check that the scan covers the common iliac arteries and the seed lies in the aorta.");
   }
   const Bifurcation& y = candidates.front();

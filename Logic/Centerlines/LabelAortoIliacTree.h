@@ -14,7 +14,11 @@
 ///    (which rules out junctions in the chest whose lower limbs are short branches), the two
 ///    lower ones at
 ///    least `minimumIliacRadiusRatio` × the upper one's radius and the upper one at least 0.8 ×
-///    the wider lower one's (which rules out the arch of a chest scan). Branch directions are taken
+///    the wider lower one's (which rules out the arch of a chest scan), and the aorta followed up
+///    (step 2) at least `minimumAortaToIliacRatio` × as wide as each iliac followed down, median
+///    radius over the whole vessels (which rules out large vessels meeting: the aorta against the
+///    heart and the venae cavae when the lumen spreads into them; the refusal is named in the
+///    no-bifurcation error). Branch directions are taken
 ///    `directionReachMm` along each branch; radii are the median beyond the junction's own
 ///    radius. Of several such junctions the one with the widest pair of lower branches wins;
 ///    a runner-up within 10 % of it, elsewhere, makes the answer ambiguous.
@@ -57,6 +61,7 @@ struct CenterlineParams
   double minimumIliacDescentMm = 40.0;    ///< how far below the bifurcation each iliac ends, mm
   double minimumIliacRadiusRatio = 0.25;  ///< iliac radius / aortic radius at the bifurcation
   double internalIliacRadiusRatio = 0.35; ///< internal iliac radius / common iliac radius
+  double minimumAortaToIliacRatio = 1.2;  ///< aorta's median radius / each iliac's, whole vessels
 };
 
 void ValidateCenterlineParams(const CenterlineParams& params);

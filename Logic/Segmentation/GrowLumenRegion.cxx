@@ -122,15 +122,149 @@ short ClampToShort(double value)
     std::clamp(value, double(std::numeric_limits<short>::min()), double(std::numeric_limits<short>::max())));
 }
 
-/// Step 1: the window from the seed's neighbourhood (Auto) or as given (Manual), with the seed
-/// checks; sets the window and seed statistics of `result`.
+/// Fraction of `stats.voxels` outside [low, high] HU.
+double FractionOutside(const CtImage& ct, const SeedStatistics& stats, double low, double high)
+{
+  long outside = 0;
+  for (const auto& index : stats.voxels)
+  {
+    const double v = ct.GetPixel(index);
+    outside += v < low || v > high;
+  }
+  return stats.voxels.empty() ? 0.0 : double(outside) / double(stats.voxels.size());
+}
+
+/// True when the straight line from `seed` to `centre` stays in voxels of at least `minimumHu`
+/// beyond its first `skipMm` (a seed placed on a flap or on the wall's edge lies in dark voxels
+/// itself): the two lie in one lumen, not across a wall or flap.
+bool JoinedThroughLumen(const CtImage& ct,
+                        const CtImage::IndexType& seed,
+                        const CtImage::IndexType& centre,
+                        double distanceMm,
+                        double minimumHu,
+                        double skipMm)
+{
+  const int steps = std::max(1, static_cast<int>(std::ceil(distanceMm / 0.5)));
+  for (int s = 1; s <= steps; ++s)
+  {
+    const double t = double(s) / steps;
+    if (t * distanceMm < skipMm)
+      continue;
+    CtImage::IndexType index;
+    for (unsigned a = 0; a < 3; ++a)
+      index[a] = seed[a] + std::lround(t * double(centre[a] - seed[a]));
+    if (ct.GetPixel(index) < minimumHu)
+      return false;
+  }
+  return true;
+}
+
+/// Step 1a (Auto): the neighbourhood the window is taken from. The seed's own, unless more than
+/// 2 % of its voxels lie outside ±4 σ (at least ± minimumHalfWindowHu) of the lumen's own spread
+/// near it (the median and σ of the most homogeneous fifth of the lumen neighbourhoods within
+/// `seedSearchRadiusMm`) (a wall, plaque or dissection flap inside the
+/// ball): then the nearest neighbourhood that is clean by that test. Candidates lie on a ~1 mm
+/// lattice around the seed, have a median of at least `seedMinimumHu` and are joined to the seed
+/// by a straight line through lumen (JoinedThroughLumen, the seed's own ball radius skipped).
+/// Sets the window's source in `result`.
+SeedStatistics ChooseWindowNeighbourhood(const CtImage& ct,
+                                         const CtImage::IndexType& seed,
+                                         const Point3& seedLps,
+                                         const RegionGrowingParams& params,
+                                         LumenSegmentation& result)
+{
+  const double ball = params.seedNeighbourhoodRadiusMm;
+  SeedStatistics own = MeasureSeedNeighbourhood(ct, seed, seedLps, ball);
+  result.windowCentreLps = seedLps;
+  result.windowSource = "the seed's neighbourhood";
+  if (params.thresholdMode != ThresholdMode::Auto)
+    result.windowSource = "the seed's neighbourhood; the window as given (thresholdMode manual)";
+  if (params.thresholdMode != ThresholdMode::Auto || params.seedSearchRadiusMm <= 0.0)
+    return own;
+  const auto spacing = ct.GetSpacing();
+  const auto region = ct.GetLargestPossibleRegion();
+  struct Candidate
+  {
+    CtImage::IndexType index;
+    double distanceMm, medianHu, sigmaHu;
+  };
+  std::vector<Candidate> candidates;
+  std::array<long, 3> stride{}, reach{};
+  for (unsigned a = 0; a < 3; ++a)
+  {
+    stride[a] = std::max(1L, std::lround(1.0 / spacing[a]));
+    reach[a] = static_cast<long>(std::floor(params.seedSearchRadiusMm / spacing[a]));
+  }
+  for (long dk = -(reach[2] / stride[2]) * stride[2]; dk <= reach[2]; dk += stride[2])
+    for (long dj = -(reach[1] / stride[1]) * stride[1]; dj <= reach[1]; dj += stride[1])
+      for (long di = -(reach[0] / stride[0]) * stride[0]; di <= reach[0]; di += stride[0])
+      {
+        CtImage::IndexType index = seed;
+        index[0] += di;
+        index[1] += dj;
+        index[2] += dk;
+        if (!region.IsInside(index))
+          continue;
+        const Point3 lps = IndexToLps(ct, index);
+        const double distance = (lps - seedLps).norm();
+        if (distance > params.seedSearchRadiusMm ||
+            !JoinedThroughLumen(ct, seed, index, distance, params.seedMinimumHu, ball))
+          continue;
+        const SeedStatistics s = MeasureSeedNeighbourhood(ct, index, lps, ball);
+        if (s.medianHu >= params.seedMinimumHu)
+          candidates.push_back({ index, distance, s.medianHu, s.sigmaHu });
+      }
+  if (candidates.empty())
+    return own; // the seed checks that follow report it
+  // The lumen's own spread: the lowest σ of many 65-voxel balls is biased low (the minimum of
+  // noisy estimates), so the reference is the cleanest fifth of the candidates: its σ and median.
+  std::vector<double> sigmas;
+  for (const Candidate& c : candidates)
+    sigmas.push_back(c.sigmaHu);
+  std::sort(sigmas.begin(), sigmas.end());
+  const double sigma = sigmas[sigmas.size() / 5];
+  std::vector<double> medians;
+  for (const Candidate& c : candidates)
+    if (c.sigmaHu <= sigma)
+      medians.push_back(c.medianHu);
+  const double half = std::max(4.0 * sigma, params.minimumHalfWindowHu);
+  const double low = Median(medians) - half, high = Median(medians) + half;
+  constexpr double cleanFraction = 0.02; // Gaussian noise leaves 0.006 % beyond 4 σ
+  const double ownOutside = FractionOutside(ct, own, low, high);
+  if (own.medianHu >= params.seedMinimumHu && ownOutside <= cleanFraction)
+    return own;
+  std::sort(candidates.begin(), candidates.end(),
+            [](const auto& a, const auto& b) { return a.distanceMm < b.distanceMm; });
+  for (const Candidate& c : candidates)
+  {
+    const Point3 lps = IndexToLps(ct, c.index);
+    SeedStatistics s = MeasureSeedNeighbourhood(ct, c.index, lps, ball);
+    if (FractionOutside(ct, s, low, high) <= cleanFraction)
+    {
+      result.windowCentreLps = lps;
+      result.windowSource = "a neighbourhood " + FormatNumber(c.distanceMm, 1) + " mm from the seed, at " +
+                            FormatPoint(lps) + " mm LPS (" + FormatNumber(100.0 * ownOutside, 0) +
+                            " % of the voxels around the seed itself lie outside " + FormatNumber(low, 0) + " to " +
+                            FormatNumber(high, 0) +
+                            " HU, the range of the most homogeneous fifth of the lumen within " +
+                            FormatNumber(params.seedSearchRadiusMm, 0) + " mm: wall, plaque or a flap beside the seed)";
+      result.warnings.push_back("The seed's neighbourhood is not homogeneous lumen; the HU window was taken from " +
+                                result.windowSource + ".");
+      return s;
+    }
+  }
+  return own; // no clean neighbourhood: the seed's own, whose checks follow
+}
+
+/// Step 1: the window from the seed's neighbourhood, or a cleaner one near it (Auto), or as given
+/// (Manual), with the seed checks; sets the window and seed statistics of `result`.
 SeedStatistics EstimateWindow(const CtImage& ct,
                               const CtImage::IndexType& seed,
                               const Point3& seedLps,
                               const RegionGrowingParams& params,
                               LumenSegmentation& result)
 {
-  SeedStatistics stats = MeasureSeedNeighbourhood(ct, seed, seedLps, params.seedNeighbourhoodRadiusMm);
+  SeedStatistics stats = ChooseWindowNeighbourhood(ct, seed, seedLps, params, result);
   result.seedMedianHu = stats.medianHu;
   result.seedSigmaHu = stats.sigmaHu;
   const std::string seedText = "Seed " + FormatPoint(seedLps) + " mm LPS";
@@ -504,6 +638,7 @@ void ValidateRegionGrowingParams(const RegionGrowingParams& params)
   check("leakOpeningRadiusMm", params.leakOpeningRadiusMm, 0, 5, "mm");
   check("maximumLumenVolumeMl", params.maximumLumenVolumeMl, 1, 20000, "mL");
   check("seedNeighbourhoodRadiusMm", params.seedNeighbourhoodRadiusMm, 0, 20, "mm");
+  check("seedSearchRadiusMm", params.seedSearchRadiusMm, 0, 20, "mm");
   check("minimumHalfWindowHu", params.minimumHalfWindowHu, 0, 1000, "HU");
   check("refineDistanceMm", params.refineDistanceMm, 0, 10, "mm");
   check("tissueDepthMm", params.tissueDepthMm, 0, 20, "mm");

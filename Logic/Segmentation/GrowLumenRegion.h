@@ -7,7 +7,12 @@
 ///  1. **Window.** The median m and robust standard deviation σ (1.4826 × MAD) of the voxels within
 ///     `seedNeighbourhoodRadiusMm` of the seed give the window [m − h, m + 2h], h = max(k·σ,
 ///     `minimumHalfWindowHu`), k = `windowSigmas` (thresholdMode Auto); or [lowerHu, upperHu] as
-///     given (Manual). The window reaches further up than down: above the lumen lie only
+///     given (Manual). A seed beside the wall, a calcified plaque or a dissection flap has such
+///     voxels in its ball, which widen the window into tissue: when more than 2 % of the ball lies
+///     outside ±4 σ of the most homogeneous fifth of the lumen neighbourhoods within `seedSearchRadiusMm` (joined
+///     to the seed by a straight line through lumen, so never across a wall or flap), the window
+///     is taken from the nearest clean neighbourhood instead, with a warning naming it (Auto only).
+///     The window reaches further up than down: above the lumen lie only
 ///     brighter contrast, then calcium and cortical bone (> 700 HU); below it lie enhancing
 ///     kidney parenchyma (150–200 HU) and cancellous bone (200–300 HU).
 ///  2. **Region growing** from the seed: the face-connected (6-neighbour) region of voxels in the
@@ -84,6 +89,7 @@ struct RegionGrowingParams
   double maximumLumenVolumeMl = 1500.0; ///< larger lumen = leak, mL; in [1, 20000]
 
   double seedNeighbourhoodRadiusMm = 2.5; ///< ball for the seed statistics, mm
+  double seedSearchRadiusMm = 5.0;        ///< Auto: how far a cleaner neighbourhood is looked for, mm; 0 = never
   double minimumHalfWindowHu = 30.0;      ///< floor of h for noise-free images, HU
   double refineDistanceMm = 1.6;          ///< reach of the boundary refinement, mm
   double tissueDepthMm = 5.0;             ///< where tissue is sampled outside the region, mm
@@ -106,6 +112,8 @@ struct LumenSegmentation
   double calciumHu = 0.0;
   double seedMedianHu = 0.0;         ///< median HU around the seed
   double seedSigmaHu = 0.0;          ///< robust standard deviation around the seed, HU
+  Point3 windowCentreLps{ 0, 0, 0 }; ///< centre of the neighbourhood the window came from, LPS mm
+  std::string windowSource;          ///< where the window came from and why, for the report
   double tissueHu = 0.0;             ///< median HU just outside the region
   double cutVolumeMl = 0.0;          ///< volume removed by the leak-cutting opening, mL
   std::vector<std::string> warnings; ///< one line each, without the "WARNING: " prefix

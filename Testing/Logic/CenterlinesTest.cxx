@@ -284,6 +284,46 @@ TEST(LabelAortoIliacTree, ScanEndingAboveTheIliacs_NoBifurcationError)
   }
 }
 
+// Three vessels meeting in the shape of a Y — one up, two down to opposite sides — are an aortic
+// bifurcation only when the upper one is clearly the widest over its length: equally wide, they
+// are large vessels meeting (where the lumen spread from the aorta into the heart and the venae
+// cavae, the aorta above, the vena cava and the aorta below were named aorta and iliacs, issue 13).
+// Refused from a median-radius ratio under minimumAortaToIliacRatio (1.2); named above it.
+class YOfLowerRadius : public ::testing::TestWithParam<double>
+{
+};
+
+TEST_P(YOfLowerRadius, NamedOnlyWhenTheAortaIsClearlyTheWidest)
+{
+  const double lower = GetParam(), upper = 11.0;
+  const std::vector<testing::Capsule> y{ { Point3(0, 0, 0), Point3(0, 0, 120), upper },
+                                         { Point3(0, 0, 0), Point3(-45, 0, -110), lower },
+                                         { Point3(0, 0, 0), Point3(45, 0, -110), lower } };
+  const auto mask = testing::PaintCapsules(y, { 1.0, 1.0, 1.0 });
+  // The skeleton's radii are within a voxel of the capsules' (RadiiMatchAnalyticInscribedRadii…):
+  // 11 / 8.5 = 1.29 is named, 11 / 10 = 1.1 and 11 / 11 refused.
+  const bool aBifurcation = upper / lower >= 1.2 + 0.05;
+  try
+  {
+    const CenterlineTree tree = testing::CenterlinesFromMask(*mask);
+    EXPECT_TRUE(aBifurcation) << "a Y was named under vessels " << lower << " mm in radius, the upper one " << upper;
+    EXPECT_LT(tree.rightIliac.points(tree.rightIliac.Size() - 1, 0), -30.0); // patient right: −x
+  }
+  catch (const AlgorithmError& e)
+  {
+    const std::string message = e.what();
+    EXPECT_FALSE(aBifurcation) << message;
+    EXPECT_EQ(message.rfind("No aortic bifurcation found", 0), 0u) << message;
+    EXPECT_NE(message.find("has the shape of a Y, but the vessel above it"), std::string::npos) << message;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(LabelAortoIliacTree,
+                         YOfLowerRadius,
+                         ::testing::Values(6.0, 8.5, 10.0, 11.0),
+                         [](const auto& info)
+                         { return "LowerRadius" + std::to_string(int(info.param * 10)) + "Tenths"; });
+
 TEST(LabelAortoIliacTree, TwoSeparateTubes_PiecesError)
 {
   const std::vector<testing::Capsule> tubes{ { Point3(0, 0, 0), Point3(0, 0, 60), 6.0 },

@@ -1,0 +1,217 @@
+#!/usr/bin/python3
+"""Random-anatomy sweep: the whole CLI on random draws of the project's phantom (issue 13, item 5).
+
+Usage: sweep_random_anatomy.py --phantom PHANTOM_EXE --cli SGS_EXE --workdir DIR
+                               [--draws N] [--seed S] [--require FRACTION] [--keep]
+
+Each draw picks an anatomy and a scan over the ranges of issue 13 (neck 18-30 mm across and
+12-40 mm long, beta 0-60 deg, sac 40-80 mm, distal neck 15 mm to the neck's diameter, unequal
+iliacs 8-18 mm, pixels 0.6-0.95 mm and slices 0.625-3 mm, a rotation up to 25 deg about a random
+axis and random axis flips, noise 8-35 HU, blur 0.4-1.1 mm, lumen 265-470 HU, bone and kidneys
+at random), generates it with SyntheticAorticPhantom, runs StentGraftSimulation from the
+phantom's seed and sorts the outcome into one class:
+
+- `plan`: exit 0 and every lumen diameter (a)-(f) within tolerance of the truth: 1.0 mm on slices
+  up to 1.25 mm, 1.5 mm on thicker ones (a voxel's worth of partial volume along the slice), plus
+  at (a) and (b) the change of the truth's diameter over +-1 mm of centerline (a level on a steep
+  shoulder moves the diameter fast); lengths are not judged here (the pipeline tests do);
+- `off:<value>`: a plan with that value out of tolerance (right and left are compared with the
+  truth's right and left, so a swapped side shows here);
+- `error:<first words>`: a clean failure: non-zero exit, exactly one stderr line `ERROR: ...`,
+  no output file left;
+- `bad-error`, `crash`, `hang`: anything else (a signal, several stderr lines, a partial output,
+  more than the time limit).
+
+Prints one line per draw (class, then the flags that rebuild it) and a table of the classes;
+exits 1 when a draw is bad-error/crash/hang or the share of `plan` is below --require.
+"""
+
+import argparse
+import collections
+import json
+import math
+import os
+import random
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+
+TIMEOUT_S = 900  # one draw on the 2-core machine takes 10-40 s; a hang is far beyond
+LUMEN_VALUES = {  # return value -> truth sizing name
+    "proximalNeckLumenDiameter": "proximalNeckDiameter",
+    "neckLumenDiameter15mm": "neckDiameter15mm",
+    "maxAneurysmLumenDiameter": "maxAneurysmDiameter",
+    "distalNeckMinLumenDiameter": "distalNeckMinDiameter",
+    "rightIliacLumenDiameter": "rightIliacDiameter",
+    "leftIliacLumenDiameter": "leftIliacDiameter",
+}
+
+
+def rotation(axis, angle):
+    axis = np.asarray(axis, float) / np.linalg.norm(axis)
+    k = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
+
+
+def draw(rng):
+    """One anatomy and scan as SyntheticAorticPhantom flags."""
+    neck = rng.uniform(18, 30)
+    axis = [rng.gauss(0, 1) for _ in range(3)]
+    direction = rotation(axis, math.radians(rng.uniform(0, 25))) @ np.diag(
+        [rng.choice([-1, 1]) for _ in range(3)])
+    pixel = rng.uniform(0.6, 0.95)
+    flags = {
+        "--neckDiameterMm": "%.1f" % neck,
+        "--neckLengthMm": "%.1f" % rng.uniform(12, 40),
+        "--maxAneurysmDiameterMm": "%.1f" % rng.uniform(max(40, neck + 12), 80),
+        "--aneurysmLengthMm": "%.1f" % rng.uniform(70, 115),
+        "--distalNeckDiameterMm": "%.1f" % rng.uniform(15, neck),
+        "--rightIliacDiameterMm": "%.1f" % rng.uniform(8, 18),
+        "--leftIliacDiameterMm": "%.1f" % rng.uniform(8, 18),
+        "--neckAngleDeg": "%.1f" % rng.choice([0.0, rng.uniform(0, 60)]),
+        "--noiseSigmaHu": "%.1f" % rng.uniform(8, 35),
+        "--blurSigmaMm": "%.2f" % rng.uniform(0.4, 1.1),
+        "--lumenHu": "%d" % rng.uniform(265, 470),
+        "--noiseSeed": "%d" % rng.randrange(1, 10 ** 6),
+        "--spacingMm": "%.3f,%.3f,%s" % (pixel, pixel, rng.choice(["0.625", "1", "1.25", "2", "2.5", "3"])),
+        # Columns of the matrix: the i, j and k axes' directions, one after another.
+        "--directionLps": ",".join("%.6f" % v for v in direction.T.flatten()),
+    }
+    if rng.random() < 0.5:
+        flags["--includeBone"] = None
+        flags["--boneGapMm"] = "%.1f" % rng.uniform(1.5, 8)
+    if rng.random() < 0.5:
+        flags["--includeKidneys"] = None
+        flags["--kidneyHu"] = "%d" % rng.uniform(150, 200)
+    return flags
+
+
+def flag_list(flags):
+    out = []
+    for name, value in flags.items():
+        out += [name] if value is None else [name, value]
+    return out
+
+
+def run(argv, cwd):
+    try:
+        result = subprocess.run(argv, capture_output=True, timeout=TIMEOUT_S, cwd=cwd, text=True)
+    except subprocess.TimeoutExpired:
+        return None
+    return result
+
+
+def read_params(path):
+    values = {}
+    with open(path) as handle:
+        for line in handle:
+            if "=" in line:
+                name, value = line.split("=", 1)
+                values[name.strip()] = value.strip()
+    return values
+
+
+def shoulder_allowance(truth, level_name, below_mm):
+    """Largest change of the truth aorta's diameter within +-1 mm of the level `below_mm` along
+    the axis below the landmark `level_name` (0 where the aorta's diameter is constant)."""
+    aorta = next(v for v in truth["vessels"] if v["name"] == "aorta")
+    points, radii = np.array(aorta["points"], float), np.array(aorta["radiusMm"], float)
+    abscissa = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(points, axis=0), axis=1))])
+    site = np.array(truth["landmarks"][level_name], float)
+    s0 = abscissa[int(np.argmin(np.linalg.norm(points - site, axis=1)))] + below_mm
+    near = np.abs(abscissa - s0) <= 1.0 + 1e-9
+    if not near.any():
+        return 0.0
+    diameter_here = 2.0 * np.interp(s0, abscissa, radii)
+    return float(np.max(np.abs(2.0 * radii[near] - diameter_here)))
+
+
+def judge(truth, values, slice_mm):
+    """The first lumen diameter out of tolerance, or None."""
+    base = 1.0 if slice_mm <= 1.25 + 1e-9 else 1.5
+    for name, truth_name in LUMEN_VALUES.items():
+        tolerance = base
+        if name == "proximalNeckLumenDiameter":
+            tolerance += shoulder_allowance(truth, "proximalImplantationSite", 0.0)
+        elif name == "neckLumenDiameter15mm":
+            tolerance += shoulder_allowance(truth, "proximalImplantationSite", 15.0)
+        measured = float(values.get(name, "-1"))
+        expected = float(truth["sizing"][truth_name])
+        if measured < 0 or abs(measured - expected) > tolerance:
+            return "%s %.1f vs %.1f (tolerance %.1f)" % (name, measured, expected, tolerance)
+    return None
+
+
+def one_draw(phantom, cli, workdir, index, flags):
+    folder = os.path.join(workdir, "draw-%03d" % index)
+    if os.path.exists(folder):
+        shutil.rmtree(folder)
+    os.makedirs(folder)
+    volume, truth_path, params = (os.path.join(folder, n) for n in ("ct.nrrd", "truth.json", "phantom.params"))
+    made = run([phantom, "--outputTruth", truth_path, "--returnparameterfile", params, *flag_list(flags), volume],
+               folder)
+    if made is None or made.returncode != 0:
+        return "phantom-failed", (made.stderr.strip()[:200] if made else "hang")
+    truth = json.load(open(truth_path))
+    seed = read_params(params)["seedRas"]
+    out = os.path.join(folder, "out")
+    os.makedirs(out)
+    retfile = os.path.join(out, "ret.params")
+    result = run([cli, "--returnparameterfile", retfile, "--seed", seed,
+                  "--outputStentModel", os.path.join(out, "stent.vtp"), volume], folder)
+    if result is None:
+        return "hang", ""
+    if result.returncode < 0:
+        return "crash", "signal %d" % -result.returncode
+    lines = result.stderr.strip().splitlines()
+    errors = [line for line in lines if line.startswith("ERROR: ")]
+    if result.returncode != 0:
+        if len(lines) == 1 and errors and not os.listdir(out):
+            words = " ".join(errors[0][len("ERROR: "):].split()[:5])
+            return "error:" + words, errors[0][:300]
+        return "bad-error", result.stderr.strip()[:300]
+    off = judge(truth, read_params(retfile), float(flags["--spacingMm"].split(",")[2]))
+    if off:
+        return "off:" + off.split()[0], off
+    return "plan", ""
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--phantom", required=True)
+    parser.add_argument("--cli", required=True)
+    parser.add_argument("--workdir", required=True)
+    parser.add_argument("--draws", type=int, default=30)
+    parser.add_argument("--seed", type=int, default=13)
+    parser.add_argument("--require", type=float, default=0.0, help="least share of plans within tolerance")
+    parser.add_argument("--keep", action="store_true", help="keep each draw's folder")
+    args = parser.parse_args()
+    workdir = os.path.abspath(args.workdir)
+    os.makedirs(workdir, exist_ok=True)
+    rng = random.Random(args.seed)
+    classes = collections.Counter()
+    bad = 0
+    for index in range(args.draws):
+        flags = draw(rng)
+        outcome, detail = one_draw(os.path.abspath(args.phantom), os.path.abspath(args.cli), workdir, index, flags)
+        classes[outcome] += 1
+        bad += outcome in ("bad-error", "crash", "hang", "phantom-failed")
+        print("%3d %-40s %s" % (index, outcome, " ".join(flag_list(flags))), flush=True)
+        if detail:
+            print("      " + detail, flush=True)
+        if not args.keep:
+            shutil.rmtree(os.path.join(workdir, "draw-%03d" % index), ignore_errors=True)
+    plans = classes["plan"]
+    print("\n%d draws (seed %d): %d plans within tolerance (%.0f %%)" % (
+        args.draws, args.seed, plans, 100.0 * plans / max(1, args.draws)))
+    for outcome, count in classes.most_common():
+        print("  %4d  %s" % (count, outcome))
+    ok = bad == 0 and plans >= args.require * args.draws
+    print("PASS" if ok else "FAIL")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
