@@ -70,7 +70,7 @@ def draw(rng):
         "--distalNeckDiameterMm": "%.1f" % rng.uniform(15, neck),
         "--rightIliacDiameterMm": "%.1f" % rng.uniform(8, 18),
         "--leftIliacDiameterMm": "%.1f" % rng.uniform(8, 18),
-        "--neckAngleDeg": "%.1f" % rng.choice([0.0, rng.uniform(0, 60)]),
+        "--neckAngleDeg": "%.1f" % rng.uniform(0, 60),
         "--noiseSigmaHu": "%.1f" % rng.uniform(8, 35),
         "--blurSigmaMm": "%.2f" % rng.uniform(0.4, 1.1),
         "--lumenHu": "%d" % rng.uniform(265, 470),

@@ -101,6 +101,26 @@ double ReachableLength(const SkeletonGraph& graph, int edge, int node)
   return length;
 }
 
+/// True when an end point (degree 1) can be reached through `edge` from `node` without passing
+/// `node` or a node of `blocked`.
+bool LeadsToANewEnd(const SkeletonGraph& graph, int node, int edge, const std::set<int>& blocked)
+{
+  std::set<int> seen{ node };
+  std::vector<int> stack{ graph.Other(edge, node) };
+  while (!stack.empty())
+  {
+    const int n = stack.back();
+    stack.pop_back();
+    if (blocked.count(n) || !seen.insert(n).second)
+      continue;
+    if (graph.Degree(n) == 1)
+      return true;
+    for (int e : graph.nodes[n].edges)
+      stack.push_back(graph.Other(e, n));
+  }
+  return false;
+}
+
 /// A vessel followed through the graph from a node along an edge.
 struct VesselPath
 {
@@ -136,9 +156,11 @@ VesselPath FollowVessel(const SkeletonGraph& graph, int start, int firstEdge, st
   while (blocked.insert(node).second)
   {
     path.nodes.push_back(node);
+    // Ways on that reach an end the path has not passed: a loop in the skeleton (a tunnel through
+    // a sac) leads only back into the path, and taken, it ended the aorta in the sac.
     std::vector<int> options;
     for (int e : graph.nodes[node].edges)
-      if (e != incoming && graph.edges[e].a != graph.edges[e].b)
+      if (e != incoming && graph.edges[e].a != graph.edges[e].b && LeadsToANewEnd(graph, node, e, blocked))
         options.push_back(e);
     if (options.empty())
       break;
@@ -268,24 +290,45 @@ std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph,
           if (rightPath.points.back().z() > bottom || leftPath.points.back().z() > bottom)
             continue;
           const double score = std::min(right.radius, left.radius);
-          // The aorta is the widest vessel of the Y over its length: a junction whose upper vessel
-          // is not clearly wider than each lower one is large vessels meeting (the aorta against
-          // the heart and the venae cavae, a leak's loops), not the aorta above its bifurcation.
-          // Whole vessels are compared, not their first centimetres: a common iliac aneurysm may be
-          // wider than the aorta just above it, never the iliac over its length (the external
-          // iliac is most of it).
+          const std::string where =
+            "the junction at " + FormatPoint(graph.nodes[n].position) + " mm LPS has the shape of a Y, but ";
+          // The aorta is wider than each iliac over its length: a junction whose upper vessel is
+          // narrower than a lower one is large vessels meeting (the venae cavae at the heart), not
+          // the aorta above its bifurcation. Whole vessels are compared, not their first
+          // centimetres: a common iliac aneurysm may be wider than the aorta just above it, never
+          // the iliac over its length (the external iliac is most of it). Only "narrower": a
+          // small aorta (18 mm) over ectatic iliacs (16–17 mm) is a real Y.
           if (aortaRadius < 0.0)
             aortaRadius = Median(FollowVessel(graph, n, up.edge, {}, params.directionReachMm).radii);
           const double iliacRadius = std::max(Median(rightPath.radii), Median(leftPath.radii));
           if (aortaRadius < params.minimumAortaToIliacRatio * iliacRadius)
           {
             refused.push_back({ n, score,
-                                "the junction at " + FormatPoint(graph.nodes[n].position) +
-                                  " mm LPS has the shape of a Y, but the vessel above it (median " +
-                                  FormatNumber(2.0 * aortaRadius, 1) + " mm across) is not " +
-                                  FormatNumber(params.minimumAortaToIliacRatio, 1) + " times as wide as the ones " +
-                                  "below (up to " + FormatNumber(2.0 * iliacRadius, 1) +
+                                where + "the vessel above it (median " + FormatNumber(2.0 * aortaRadius, 1) +
+                                  " mm across) is narrower than one below (" + FormatNumber(2.0 * iliacRadius, 1) +
                                   " mm): large vessels meeting, not the aorta and its iliacs" });
+            continue;
+          }
+          // The renal and visceral arteries leave the aorta above its bifurcation: a lower limb
+          // giving off a branch forward (anterior, direction y < −0.6) as wide as the coeliac or
+          // the superior mesenteric (radius ≥ visceralRadiusMm; an iliac's anterior branches, the
+          // inferior epigastric and the superficial circumflex, are under 1.5 mm) is the aorta
+          // below a junction of the aorta with other large vessels (the heart), and the scan may
+          // end above the real bifurcation.
+          std::string visceral;
+          for (const auto* path : { &rightPath, &leftPath })
+            for (const auto& junction : path->junctions)
+              for (int e : junction.sideEdges)
+                if (visceral.empty() && BranchDirection(graph, e, junction.node, params.directionReachMm).y() < -0.6 &&
+                    BranchRadius(graph, e, junction.node, params.directionReachMm) >= params.visceralRadiusMm &&
+                    ReachableLength(graph, e, junction.node) >= params.minimumBranchLengthMm / 2)
+                  visceral = FormatPoint(graph.nodes[junction.node].position);
+          if (!visceral.empty())
+          {
+            refused.push_back({ n, score,
+                                where + "a vessel below it gives off a branch forward at " + visceral +
+                                  " mm LPS as wide as a visceral artery: that vessel is the aorta, and the " +
+                                  "junction above it is not its bifurcation" });
             continue;
           }
           if (found.empty() || found.back().node != n || found.back().score < score)
@@ -412,6 +455,7 @@ void ValidateCenterlineParams(const CenterlineParams& params)
   CheckRange("minimumIliacRadiusRatio", params.minimumIliacRadiusRatio, 0, 1, "");
   CheckRange("internalIliacRadiusRatio", params.internalIliacRadiusRatio, 0, 1, "");
   CheckRange("minimumAortaToIliacRatio", params.minimumAortaToIliacRatio, 0, 10, "");
+  CheckRange("visceralRadiusMm", params.visceralRadiusMm, 0, 20, "mm");
 }
 
 CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineParams& params)

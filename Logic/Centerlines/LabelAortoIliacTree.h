@@ -14,16 +14,20 @@
 ///    (which rules out junctions in the chest whose lower limbs are short branches), the two
 ///    lower ones at
 ///    least `minimumIliacRadiusRatio` × the upper one's radius and the upper one at least 0.8 ×
-///    the wider lower one's (which rules out the arch of a chest scan), and the aorta followed up
-///    (step 2) at least `minimumAortaToIliacRatio` × as wide as each iliac followed down, median
-///    radius over the whole vessels (which rules out large vessels meeting: the aorta against the
-///    heart and the venae cavae when the lumen spreads into them; the refusal is named in the
+///    the wider lower one's (which rules out the arch of a chest scan), the aorta followed up
+///    (step 2) at least `minimumAortaToIliacRatio` × as wide as each iliac followed down (median
+///    radius over the whole vessels), and no lower limb giving off an anterior branch (y < −0.6)
+///    at least `visceralRadiusMm` wide and `minimumBranchLengthMm`/2 long, a visceral artery
+///    (these two rule out large vessels meeting — the aorta against the heart and the venae cavae
+///    when the lumen spreads into them — and each refusal is named in the
 ///    no-bifurcation error). Branch directions are taken
 ///    `directionReachMm` along each branch; radii are the median beyond the junction's own
 ///    radius. Of several such junctions the one with the widest pair of lower branches wins;
 ///    a runner-up within 10 % of it, elsewhere, makes the answer ambiguous.
 /// 2. **The aorta** is followed upward from it, at each junction into the widest branch that
-///    continues the direction (score: radius × (1 + cos of the turn)/2), to an end; if the
+///    continues the direction (score: radius × (1 + cos of the turn)/2), among the branches that
+///    reach an end not yet passed (a loop in the skeleton, a tunnel through a sac, leads only
+///    back into the path and would end the aorta in the sac), to an end; if the
 ///    path passes over a top (the arch in a chest scan) and comes down again by more than
 ///    `minimumBranchLengthMm`, the part after the top is the side branch `ascendingAorta`.
 ///    The aorta runs from its top down to the bifurcation.
@@ -61,7 +65,8 @@ struct CenterlineParams
   double minimumIliacDescentMm = 40.0;    ///< how far below the bifurcation each iliac ends, mm
   double minimumIliacRadiusRatio = 0.25;  ///< iliac radius / aortic radius at the bifurcation
   double internalIliacRadiusRatio = 0.35; ///< internal iliac radius / common iliac radius
-  double minimumAortaToIliacRatio = 1.2;  ///< aorta's median radius / each iliac's, whole vessels
+  double minimumAortaToIliacRatio = 1.0;  ///< aorta's median radius / each iliac's, whole vessels
+  double visceralRadiusMm = 2.5;          ///< an anterior branch this wide below a Y is visceral, mm
 };
 
 void ValidateCenterlineParams(const CenterlineParams& params);

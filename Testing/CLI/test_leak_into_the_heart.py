@@ -102,7 +102,7 @@ def main():
     seed_at_coeliac = "0,0,%g" % (coeliac_z + 5)  # in the aorta (on its axis, x = y = 0)
 
     # Whether the skeleton meets in one junction with the shape of a Y depends on the noise: of noise
-    # draws 0-5, draws 3 and 4 gave it (named a Y before the widest-aorta rule), the others a
+    # draws 0-5, draws 3 and 4 gave it (named a Y before the plausibility rules), the others a
     # skeleton without one. Both kinds are run; each must be one clean error, and the first two
     # must name the junction refused.
     for noise_seed, refused in ((3, True), (4, True), (5, False)):
@@ -112,7 +112,7 @@ def main():
         crop_above(chest, ending_at_coeliac, coeliac_z - 10)
         needles = ["No aortic bifurcation found", "the scan spans z "]
         if refused:
-            needles.append("has the shape of a Y, but the vessel above it")
+            needles.append("has the shape of a Y, but")
         bad_case(cli, workdir, "ends-at-coeliac-noise-%d-whole-plan" % noise_seed, ending_at_coeliac,
                  ["--seed", seed_at_coeliac, "--outputStentModel", "{outdir}/stent.vtp"], needles)
         if noise_seed == 3:
