@@ -159,14 +159,14 @@ bool JoinedThroughLumen(const CtImage& ct,
   return true;
 }
 
-/// Step 1a (Auto): the neighbourhood the window is taken from. The seed's own, unless more than
-/// 2 % of its voxels lie outside ±4 σ (at least ± minimumHalfWindowHu) of the lumen's own spread
-/// near it (the median and σ of the most homogeneous fifth of the lumen neighbourhoods within
-/// `seedSearchRadiusMm`) (a wall, plaque or dissection flap inside the
-/// ball): then the nearest neighbourhood that is clean by that test. Candidates lie on a ~1 mm
-/// lattice around the seed, have a median of at least `seedMinimumHu` and are joined to the seed
-/// by a straight line through lumen (JoinedThroughLumen, the seed's own ball radius skipped).
-/// Sets the window's source in `result`.
+/// Step 1a (Auto): the neighbourhood the window is taken from. The seed's own ball, unless more
+/// than 2 % of its voxels lie outside ±4 σ (at least ± minimumHalfWindowHu) of the lumen's own
+/// spread near it — a wall, plaque or dissection flap inside the ball. The lumen's spread is the
+/// median and σ of the most homogeneous fifth of the candidate balls: centred on a ~1 mm lattice
+/// within `seedSearchRadiusMm` of the seed, each with a median of at least `seedMinimumHu` and
+/// joined to the seed by a straight line through lumen (JoinedThroughLumen, the seed's own ball
+/// radius skipped). Then the nearest candidate that is clean by the same test is used. Sets the
+/// window's source in `result` and, when it moved, a warning.
 SeedStatistics ChooseWindowNeighbourhood(const CtImage& ct,
                                          const CtImage::IndexType& seed,
                                          const Point3& seedLps,
@@ -548,11 +548,18 @@ void CheckForDarkFlood(const CutRegion& region,
   }
   if (dark * voxelMl > params.darkLeakLimitMl)
   {
+    // The advice fits the mode: an automatic window is narrowed through windowSigmas or replaced
+    // by a manual one; a manual window's lower end is raised, or the automatic one tried.
+    const std::string remedy =
+      params.thresholdMode == ThresholdMode::Auto
+        ? "the automatic window's lower end is " + FormatNumber(result.lowerHu, 0) + " HU: lower windowSigmas (now " +
+            FormatNumber(params.windowSigmas, 1) + "), or use thresholdMode manual with lowerHu above " +
+            FormatNumber(darkHu, 0) + " HU."
+        : "raise the lower threshold (now " + FormatNumber(result.lowerHu, 0) + " HU) or use thresholdMode auto.";
     throw AlgorithmError("Region growing leaked into darker tissue: " + FormatNumber(dark * voxelMl, 1) +
                          " mL deep inside the region is below " + FormatNumber(darkHu, 0) +
                          " HU, while the lumen at the " + "seed is " + FormatNumber(stats.medianHu, 0) +
-                         " HU (likely kidney, bowel or marrow); raise the " + "lower threshold (now " +
-                         FormatNumber(result.lowerHu, 0) + " HU) or use thresholdMode auto.");
+                         " HU (likely kidney, bowel or marrow); " + remedy);
   }
 }
 

@@ -439,6 +439,12 @@ TEST(LabelAortoIliacTree, ParameterOutOfRange_InputError)
   params = {};
   params.minimumIliacRadiusRatio = 2.0;
   EXPECT_THROW(ValidateCenterlineParams(params), InputError);
+  params = {};
+  params.minimumAortaToIliacRatio = -0.5;
+  EXPECT_THROW(ValidateCenterlineParams(params), InputError);
+  params = {};
+  params.visceralRadiusMm = std::nan("");
+  EXPECT_THROW(ValidateCenterlineParams(params), InputError);
   SkeletonGraphParams graph;
   graph.spurLengthRatio = -1.0;
   EXPECT_THROW(ValidateSkeletonGraphParams(graph), InputError);

@@ -192,6 +192,24 @@ TEST(GrowLumenRegion, ManualWindowBelowKidneyHu_FloodDetected)
 
 /// A cylinder of lumen joined to a block of the same HU (13.8 mL, the size of a vertebral body's
 /// marrow) by a bridge one voxel thick: the leak phantom of STYLE.md B6.
+TEST(GrowLumenRegion, AutomaticWindowBelowKidneyHu_FloodDetectedWithAdviceForAuto)
+{
+  // The same flood from an automatic window made wide (350 − 10 × 20 HU ≈ 150–180 HU) into kidneys
+  // of 250 HU (under the flood test's 40 + 0.7 × 310 = 257 HU): the advice is for the automatic
+  // mode (windowSigmas, or a manual lowerHu), not "use thresholdMode auto", which a low-contrast
+  // scan in the random sweep was told while in it.
+  PhantomParams p;
+  p.includeKidneys = true;
+  p.kidneyHu = 250.0;
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  RegionGrowingParams params;
+  params.windowSigmas = 10.0;
+  const std::string message = MessageOf([&] { GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, params); });
+  EXPECT_NE(message.find("leaked into darker tissue"), std::string::npos) << message;
+  EXPECT_NE(message.find("lower windowSigmas (now 10.0)"), std::string::npos) << message;
+  EXPECT_EQ(message.find("use thresholdMode auto"), std::string::npos) << message;
+}
+
 TEST(GrowLumenRegion, BlockBehindOneVoxelBridge_CutAndWarned)
 {
   auto ct = CtImage::New();
@@ -366,6 +384,7 @@ TEST_F(SmallPhantom, ParameterOutOfRange_InputErrorNamesParameterAndValue)
     { "leakOpeningRadiusMm is -1.00 mm", [](auto& p) { p.leakOpeningRadiusMm = -1; } },
     { "maximumLumenVolumeMl is 0.00 mL", [](auto& p) { p.maximumLumenVolumeMl = 0; } },
     { "seedNeighbourhoodRadiusMm is 50.00 mm", [](auto& p) { p.seedNeighbourhoodRadiusMm = 50; } },
+    { "seedSearchRadiusMm is 30.00 mm", [](auto& p) { p.seedSearchRadiusMm = 30; } },
     { "minimumHalfWindowHu is -1.00 HU", [](auto& p) { p.minimumHalfWindowHu = -1; } },
     { "refineDistanceMm is 11.00 mm", [](auto& p) { p.refineDistanceMm = 11; } },
     { "tissueDepthMm is 30.00 mm", [](auto& p) { p.tissueDepthMm = 30; } },
