@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "Common/CheckRange.h"
 #include "Common/Errors.h"
@@ -185,8 +186,9 @@ SeedStatistics ChooseWindowNeighbourhood(const CtImage& ct,
   const auto region = ct.GetLargestPossibleRegion();
   struct Candidate
   {
-    CtImage::IndexType index;
-    double distanceMm, medianHu, sigmaHu;
+    double distanceMm;
+    Point3 lps;
+    SeedStatistics stats;
   };
   std::vector<Candidate> candidates;
   std::array<long, 3> stride{}, reach{};
@@ -210,9 +212,9 @@ SeedStatistics ChooseWindowNeighbourhood(const CtImage& ct,
         if (distance > params.seedSearchRadiusMm ||
             !JoinedThroughLumen(ct, seed, index, distance, params.seedMinimumHu, ball))
           continue;
-        const SeedStatistics s = MeasureSeedNeighbourhood(ct, index, lps, ball);
+        SeedStatistics s = MeasureSeedNeighbourhood(ct, index, lps, ball);
         if (s.medianHu >= params.seedMinimumHu)
-          candidates.push_back({ index, distance, s.medianHu, s.sigmaHu });
+          candidates.push_back({ distance, lps, std::move(s) });
       }
   if (candidates.empty())
     return own; // the seed checks that follow report it
@@ -220,13 +222,13 @@ SeedStatistics ChooseWindowNeighbourhood(const CtImage& ct,
   // noisy estimates), so the reference is the cleanest fifth of the candidates: its σ and median.
   std::vector<double> sigmas;
   for (const Candidate& c : candidates)
-    sigmas.push_back(c.sigmaHu);
+    sigmas.push_back(c.stats.sigmaHu);
   std::sort(sigmas.begin(), sigmas.end());
   const double sigma = sigmas[sigmas.size() / 5];
   std::vector<double> medians;
   for (const Candidate& c : candidates)
-    if (c.sigmaHu <= sigma)
-      medians.push_back(c.medianHu);
+    if (c.stats.sigmaHu <= sigma)
+      medians.push_back(c.stats.medianHu);
   const double half = std::max(4.0 * sigma, params.minimumHalfWindowHu);
   const double low = Median(medians) - half, high = Median(medians) + half;
   constexpr double cleanFraction = 0.02; // Gaussian noise leaves 0.006 % beyond 4 σ
@@ -235,12 +237,11 @@ SeedStatistics ChooseWindowNeighbourhood(const CtImage& ct,
     return own;
   std::sort(candidates.begin(), candidates.end(),
             [](const auto& a, const auto& b) { return a.distanceMm < b.distanceMm; });
-  for (const Candidate& c : candidates)
+  for (Candidate& c : candidates)
   {
-    const Point3 lps = IndexToLps(ct, c.index);
-    SeedStatistics s = MeasureSeedNeighbourhood(ct, c.index, lps, ball);
-    if (FractionOutside(ct, s, low, high) <= cleanFraction)
+    if (FractionOutside(ct, c.stats, low, high) <= cleanFraction)
     {
+      const Point3 lps = c.lps;
       result.windowCentreLps = lps;
       result.windowSource = "a neighbourhood " + FormatNumber(c.distanceMm, 1) + " mm from the seed, at " +
                             FormatPoint(lps) + " mm LPS (" + FormatNumber(100.0 * ownOutside, 0) +
@@ -250,7 +251,7 @@ SeedStatistics ChooseWindowNeighbourhood(const CtImage& ct,
                             FormatNumber(params.seedSearchRadiusMm, 0) + " mm: wall, plaque or a flap beside the seed)";
       result.warnings.push_back("The seed's neighbourhood is not homogeneous lumen; the HU window was taken from " +
                                 result.windowSource + ".");
-      return s;
+      return std::move(c.stats);
     }
   }
   return own; // no clean neighbourhood: the seed's own, whose checks follow
