@@ -40,6 +40,16 @@ void PrintPlanSummary(const RepairPlan& plan, const std::string& acmMode, std::o
     for (const Centerline& c : tree.sideBranches)
       out << " " << c.name;
     out << std::endl;
+    if (tree.Partial())
+    {
+      const auto coverage = [&](int side)
+      {
+        return std::isnan(tree.iliacCoverageMm[side]) ? std::string("whole")
+                                                      : FormatNumber(tree.iliacCoverageMm[side]) + " mm";
+      };
+      out << "Partial plan: the scan ends below the bifurcation after " << coverage(0) << " of the right iliac and "
+          << coverage(1) << " of the left; the values that need more of them are -1." << std::endl;
+    }
   }
   if (plan.Reached(PlanStage::StentSurface))
     out << "Stent surface: " << plan.mesh.V.rows() << " vertices, " << acmMode << " mode, "

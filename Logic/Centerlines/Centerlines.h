@@ -4,6 +4,9 @@
 /// Every point is LPS mm; "right" and "left" are the patient's (right = −x in LPS).
 #pragma once
 
+#include <array>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -47,6 +50,13 @@ struct CenterlineTree
   Centerline leftIliac;
   std::vector<Centerline> sideBranches;
   std::vector<Landmark> landmarks;
+  /// Per iliac (0 right, 1 left): how many mm of it the scan holds below the aortic bifurcation
+  /// (where the axes meet; LabelAortoIliacTree.h) when the scan's inferior border cuts it before it can be followed as
+  /// a whole (a partial Y, LabelAortoIliacTree.h): the values that need more of it are not measured. NaN: whole.
+  std::array<double, 2> iliacCoverageMm{ std::numeric_limits<double>::quiet_NaN(),
+                                         std::numeric_limits<double>::quiet_NaN() };
+  /// The scan cuts an iliac short: the plan is partial.
+  bool Partial() const { return std::isfinite(iliacCoverageMm[0]) || std::isfinite(iliacCoverageMm[1]); }
 
   /// The vessel called `name` (main or side branch), or nullptr.
   const Centerline* FindVessel(const std::string& name) const;

@@ -1,6 +1,7 @@
 #include "Centerlines/LabelAortoIliacTree.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -8,6 +9,7 @@
 #include <set>
 
 #include "Centerlines/SmoothCenterline.h"
+#include "Centerlines/VesselOrigins.h"
 #include "Common/CheckRange.h"
 #include "Common/Errors.h"
 #include "Common/Format.h"
@@ -234,7 +236,23 @@ struct Bifurcation
   int node = -1;
   int up = -1, right = -1, left = -1;
   double score = 0.0;
+  std::array<bool, 2> cut{ false, false }; ///< right, left: cut by the scan's inferior border first
+  bool Partial() const { return cut[0] || cut[1]; }
 };
+
+/// Of two readings of one junction: a whole Y before a partial one, then the wider.
+bool Better(const Bifurcation& a, const Bifurcation& b)
+{
+  return a.Partial() != b.Partial() ? !a.Partial() : a.score > b.score;
+}
+
+/// An end where the image's inferior border cuts a vessel: its inscribed ball reaches the border,
+/// within its radius + 3 mm of the lowest slice.
+bool AtInferiorBorder(const SkeletonGraph& graph, int node)
+{
+  const SkeletonGraph::Node& end = graph.nodes[node];
+  return end.atBorder && end.position.z() - graph.scanLowestZMm <= end.radiusMm + 3.0;
+}
 
 /// A junction with the shape of a Y that is refused as the bifurcation, and why.
 struct RefusedY
@@ -276,18 +294,23 @@ std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph,
           // Toward opposite sides of each other: the aorta may run obliquely, so the two
           // directions are compared with each other rather than with the x axis.
           const bool sides = left.direction.x() - right.direction.x() > 0.3;
-          const bool long_ = right.length >= params.minimumIliacLengthMm && left.length >= params.minimumIliacLengthMm;
           // The iliacs are narrower than the aorta, but not much: this also rejects the arch in
           // a chest scan, whose two limbs go down under a narrow supra-aortic branch.
           const double minimum = params.minimumIliacRadiusRatio * up.radius;
           const bool wide =
             right.radius >= minimum && left.radius >= minimum && up.radius >= 0.8 * std::max(right.radius, left.radius);
-          if (!(lower && sides && long_ && wide))
+          if (!(lower && sides && wide))
             continue;
           const VesselPath rightPath = FollowVessel(graph, n, right.edge, {}, params.directionReachMm);
           const VesselPath leftPath = FollowVessel(graph, n, left.edge, {}, params.directionReachMm);
+          // Each lower limb leads on to a whole iliac (long, and down), or the scan's inferior
+          // border cuts it first (a partial Y, taken only when no whole one is found).
           const double bottom = graph.nodes[n].position.z() - params.minimumIliacDescentMm;
-          if (rightPath.points.back().z() > bottom || leftPath.points.back().z() > bottom)
+          const auto whole = [&](const Branch& b, const VesselPath& path)
+          { return b.length >= params.minimumIliacLengthMm && path.points.back().z() <= bottom; };
+          const std::array<bool, 2> cut{ !whole(right, rightPath), !whole(left, leftPath) };
+          if ((cut[0] && !AtInferiorBorder(graph, rightPath.nodes.back())) ||
+              (cut[1] && !AtInferiorBorder(graph, leftPath.nodes.back())))
             continue;
           const double score = std::min(right.radius, left.radius);
           const std::string where =
@@ -331,15 +354,20 @@ std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph,
                                   "junction above it is not its bifurcation" });
             continue;
           }
-          if (found.empty() || found.back().node != n || found.back().score < score)
+          const Bifurcation candidate{ n, up.edge, right.edge, left.edge, score, cut };
+          if (found.empty() || found.back().node != n || Better(candidate, found.back()))
           {
             if (!found.empty() && found.back().node == n)
               found.pop_back();
-            found.push_back({ n, up.edge, right.edge, left.edge, score });
+            found.push_back(candidate);
           }
         }
     }
   }
+  // A partial Y only where the scan holds no whole one.
+  if (std::any_of(found.begin(), found.end(), [](const Bifurcation& b) { return !b.Partial(); }))
+    found.erase(std::remove_if(found.begin(), found.end(), [](const Bifurcation& b) { return b.Partial(); }),
+                found.end());
   std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.score > b.score; });
   return found;
 }
@@ -415,6 +443,44 @@ std::vector<std::string> NameAorticBranches(const SkeletonGraph& graph,
   return names;
 }
 
+/// The partial Y (the file comment, step 1): how much of each cut common iliac the scan holds
+/// below the aortic bifurcation B (where the axes meet, VesselOrigins.h; the skeleton's junction
+/// lies 2–4 mm lower, in the merged cross-section): from B's foot on the iliac's first tangent
+/// along its centerline to its end, then straight on along its last tangent to the lowest slice's
+/// centre (the thinned end may stop short of the border). Fewer than `minimumIliacCoverageMm` on
+/// a side is an AlgorithmError: the scan ends just below the bifurcation.
+void MeasureIliacCoverage(const SkeletonGraph& graph,
+                          const CenterlineParams& params,
+                          CenterlineTree& tree,
+                          const std::array<bool, 2>& cut)
+{
+  const Point3 b = FindAorticBifurcation(tree).lps;
+  const Centerline* iliacs[2] = { &tree.rightIliac, &tree.leftIliac };
+  for (int side = 0; side < 2; ++side)
+  {
+    if (!cut[side])
+      continue;
+    const Centerline& iliac = *iliacs[side];
+    const Point3 start = iliac.points.row(0).transpose();
+    const double offset = (start - b).dot(TangentAt(iliac, 0.0));
+    const double endZ = iliac.points(iliac.Size() - 1, 2);
+    const double descent = std::max(0.5, -TangentAt(iliac, iliac.LengthMm()).z());
+    tree.iliacCoverageMm[side] =
+      std::max(0.0, offset + iliac.LengthMm() + std::max(0.0, endZ - graph.scanLowestZMm) / descent);
+  }
+  const double shortest = std::min(cut[0] ? tree.iliacCoverageMm[0] : 1e9, cut[1] ? tree.iliacCoverageMm[1] : 1e9);
+  if (shortest >= params.minimumIliacCoverageMm)
+    return;
+  const auto covered = [&](int side)
+  { return cut[side] ? FormatNumber(tree.iliacCoverageMm[side], 1) + " mm" : std::string("all it follows"); };
+  throw AlgorithmError("The scan ends just below the aortic bifurcation (at " + FormatPoint(b) +
+                       " mm LPS; the scan spans z " + FormatNumber(graph.scanLowestZMm, 1) + " to " +
+                       FormatNumber(graph.scanHighestZMm, 1) + " mm, inferior to superior): it holds " + covered(0) +
+                       " of the right common iliac below it and " + covered(1) +
+                       " of the left; a plan needs at least " + FormatNumber(params.minimumIliacCoverageMm, 0) +
+                       " mm of each to tell the Y and place the graft's legs.");
+}
+
 /// What the scan covers, for the no-bifurcation error: its z extent, and the vessels its inferior
 /// border cuts (a scan that ends above the bifurcation, or too little below it to follow both
 /// iliacs `minimumIliacDescentMm` down). Ends with "; ".
@@ -426,7 +492,7 @@ std::string ScanCoverage(const SkeletonGraph& graph, const CenterlineParams& par
   for (int n = 0; n < int(graph.nodes.size()); ++n)
   {
     const SkeletonGraph::Node& node = graph.nodes[n];
-    if (node.atBorder && node.position.z() - graph.scanLowestZMm <= node.radiusMm + 3.0)
+    if (AtInferiorBorder(graph, n))
     {
       ++cut;
       if (widest < 0 || node.radiusMm > graph.nodes[widest].radiusMm)
@@ -438,8 +504,8 @@ std::string ScanCoverage(const SkeletonGraph& graph, const CenterlineParams& par
   return text + ", and its inferior border cuts " + std::to_string(cut) + (cut == 1 ? " vessel" : " vessels") +
          " (the widest " + FormatNumber(2.0 * graph.nodes[widest].radiusMm, 1) + " mm across at " +
          FormatPoint(graph.nodes[widest].position) + " mm LPS): the scan ends above the aortic bifurcation, or less " +
-         "than " + FormatNumber(params.minimumIliacDescentMm, 0) +
-         " mm below it, too little of the iliacs to tell the Y (plans on such scans are not made yet); ";
+         "than " + FormatNumber(params.minimumIliacCoverageMm, 0) +
+         " mm below it, too little of the common iliacs to tell the Y; ";
 }
 
 } // namespace
@@ -452,6 +518,7 @@ void ValidateCenterlineParams(const CenterlineParams& params)
   CheckRange("minimumBranchLengthMm", params.minimumBranchLengthMm, 1, 500, "mm");
   CheckRange("minimumIliacLengthMm", params.minimumIliacLengthMm, 1, 500, "mm");
   CheckRange("minimumIliacDescentMm", params.minimumIliacDescentMm, 0, 500, "mm");
+  CheckRange("minimumIliacCoverageMm", params.minimumIliacCoverageMm, 0, 500, "mm");
   CheckRange("minimumIliacRadiusRatio", params.minimumIliacRadiusRatio, 0, 1, "");
   CheckRange("internalIliacRadiusRatio", params.internalIliacRadiusRatio, 0, 1, "");
   CheckRange("minimumAortaToIliacRatio", params.minimumAortaToIliacRatio, 0, 10, "");
@@ -560,6 +627,8 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
   };
   iliac(y.right, "right", tree.rightIliac);
   iliac(y.left, "left", tree.leftIliac);
+  if (y.Partial())
+    MeasureIliacCoverage(graph, params, tree, y.cut);
 
   // Side branches of the aorta (those past the top belong to the ascending aorta: numbered).
   for (const auto& junction : up.junctions)

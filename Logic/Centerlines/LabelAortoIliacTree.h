@@ -24,6 +24,14 @@
 ///    `directionReachMm` along each branch; radii are the median beyond the junction's own
 ///    radius. Of several such junctions the one with the widest pair of lower branches wins;
 ///    a runner-up within 10 % of it, elsewhere, makes the answer ambiguous.
+///    **A partial Y** — only where the scan holds no whole one — is a junction of that shape whose
+///    lower limb(s) fall short of `minimumIliacLengthMm` or `minimumIliacDescentMm` because the
+///    scan's inferior border cuts them (the vessel followed ends at the border: its inscribed
+///    ball reaches it, within its radius + 3 mm of the lowest slice); all the other rules hold.
+///    Each such iliac's coverage — mm from B (where the axes meet, VesselOrigins.h) along it to
+///    the lowest slice — goes into CenterlineTree::iliacCoverageMm; less than
+///    `minimumIliacCoverageMm` on a side is an AlgorithmError naming both coverages and the scan's
+///    extent (the scan ends just below the bifurcation).
 /// 2. **The aorta** is followed upward from it, at each junction into the widest branch that
 ///    continues the direction (score: radius × (1 + cos of the turn)/2), among the branches that
 ///    reach an end not yet passed (a loop in the skeleton, a tunnel through a sac, leads only
@@ -44,7 +52,8 @@
 ///
 /// Input: a SkeletonGraph (LPS mm). Output: a CenterlineTree with landmarks.
 /// Errors (AlgorithmError, never a made-up Y): no junction qualifies as the bifurcation (the
-/// message gives the numbers of end points and junctions and the longest path, mm); two
+/// message gives the numbers of end points and junctions and the longest path, mm, the scan's
+/// extent and the vessels its inferior border cuts); a partial Y with too little iliac; two
 /// candidates (the message gives both positions); a skeleton in several pieces. InputError for
 /// parameters out of range.
 #pragma once
@@ -63,6 +72,7 @@ struct CenterlineParams
   double minimumBranchLengthMm = 30.0;    ///< vessel beyond a bifurcation branch, mm
   double minimumIliacLengthMm = 60.0;     ///< vessel beyond each iliac at the bifurcation, mm
   double minimumIliacDescentMm = 40.0;    ///< how far below the bifurcation each iliac ends, mm
+  double minimumIliacCoverageMm = 10.0;   ///< of a cut common iliac below B for a partial Y, mm
   double minimumIliacRadiusRatio = 0.25;  ///< iliac radius / aortic radius at the bifurcation
   double internalIliacRadiusRatio = 0.35; ///< internal iliac radius / common iliac radius
   double minimumAortaToIliacRatio = 1.0;  ///< aorta's median radius / each iliac's, whole vessels

@@ -86,7 +86,8 @@ AorticBifurcation FindAorticBifurcation(const CenterlineTree& tree)
     if (iliac.Size() < 2)
       continue;
     const double origin = InternalIliacOriginAbscissa(tree, side);
-    const double end = std::isfinite(origin) ? std::min(30.0, origin - 5.0) : std::min(30.0, iliac.LengthMm());
+    const double end = std::isfinite(origin) ? std::min(BifurcationIliacReachMm, origin - 5.0)
+                                             : std::min(BifurcationIliacReachMm, iliac.LengthMm());
     const double from = std::min(10.0, 0.5 * end);
     if ((PositionAt(iliac, end) - PositionAt(iliac, from)).norm() > 1.0)
       axes.push_back(Chord(iliac, from, end));

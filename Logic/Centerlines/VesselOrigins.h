@@ -28,6 +28,12 @@
 namespace sgp
 {
 
+/// How far down each common iliac B's iliac axis reaches (the chord's end; file comment), mm. A
+/// scan that holds less of an iliac below the flow divider (a partial plan) locates B on
+/// shorter chords: on the AVT cases cropped 10–20 mm below it, 1.3–7.9 mm from the whole
+/// scan's B along the aorta.
+constexpr double BifurcationIliacReachMm = 30.0;
+
 /// The internal iliac origin of the right (`side` 0) or left (1) iliac, as an abscissa along
 /// that iliac's centerline (mm); NaN when the tree has no internal iliac junction on that side.
 double InternalIliacOriginAbscissa(const CenterlineTree& tree, int side);

@@ -296,6 +296,41 @@ void MeasureIliacAccess(const MeasureContext& c, const double iliacOffset[2], Me
   }
 }
 
+/// A partial plan (CenterlineTree::iliacCoverageMm): on an iliac the scan cuts short, the values
+/// that need more of it than the scan holds are NaN, with one warning naming the coverage. The
+/// landing zone's diameters need its internal iliac origin in view; the iliac's length needs
+/// that origin where the axes meet, hence the internal iliac's own axis, which the scan cuts (on
+/// AVT D4 cut 40 mm below the bifurcation it read 57.8 mm for the whole scan's 53.1 mm); the
+/// tortuosity and the access diameter need the external iliac down to the groin;
+/// B — hence the site-to-bifurcation length and β, whose aneurysm axis ends at B — needs
+/// BifurcationIliacReachMm of each iliac (VesselOrigins.h).
+void LeaveOutWhatTheScanDoesNotHold(const MeasureContext& c, Measurements& out)
+{
+  for (int side = 0; side < 2; ++side)
+  {
+    const double coverage = c.tree.iliacCoverageMm[side];
+    if (!std::isfinite(coverage))
+      continue;
+    const std::string s = Side(side);
+    std::vector<std::string> names{ s + "IliacLength", s + "IliacTortuosity", s + "AccessMinDiameter" };
+    if (!std::isfinite(c.internalIliacAbscissa[side]))
+      names.insert(names.begin(), { s + "IliacLumenDiameter", s + "IliacDiameter" });
+    if (coverage < BifurcationIliacReachMm)
+      names.insert(names.begin(), { "proximalSiteToBifurcationLength", "neckAngleBeta" });
+    std::string list;
+    for (Measurement& m : out.values)
+      if (std::find(names.begin(), names.end(), m.name) != names.end())
+      {
+        m.value = m.minMm = m.maxMm = m.areaMm = nan;
+        list += (list.empty() ? "" : ", ") + m.name;
+      }
+    out.warnings.push_back("Partial plan: the scan ends " + FormatNumber(coverage, 1) + " mm below the aortic " +
+                           "bifurcation along the " + s + " common iliac" +
+                           (std::isfinite(c.internalIliacAbscissa[side]) ? "" : ", above its internal iliac origin") +
+                           "; " + list + " need more of the " + s + " iliac than the scan holds and are not measured.");
+  }
+}
+
 } // namespace
 
 const Measurement* Measurements::Find(const std::string& name) const
@@ -366,6 +401,7 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
   MeasureLengths(c, sNeckEnd, iliacOffset, out);
   MeasureNeckAngles(c, sNeckEnd, a, b, out);
   MeasureIliacAccess(c, iliacOffset, out);
+  LeaveOutWhatTheScanDoesNotHold(c, out);
   return out;
 }
 

@@ -43,6 +43,14 @@
 ///    along the external iliac from 10 mm below the internal iliac origin to 10 mm before the
 ///    centerline's end (the delivery system's path), NaN when that stretch is shorter than 10 mm.
 ///
+/// **Partial plans** (the scan cuts an iliac short: CenterlineTree::iliacCoverageMm): on that
+/// side the iliac length, tortuosity and access diameter, and without its internal iliac origin in
+/// view the landing-zone diameters (lumen and outer), are NaN; with less than
+/// BifurcationIliacReachMm of either iliac in view, so are `proximalSiteToBifurcationLength` and
+/// `neckAngleBeta` (B located on shorter iliac axes moved 1.3–7.9 mm on the AVT cases); one
+/// warning per side, "Partial plan: the scan ends … mm below the aortic bifurcation along …",
+/// names the coverage and the values left out.
+///
 /// A value that cannot be measured is NaN and its absence is explained in `warnings`.
 /// Input: the labelled CenterlineTree, the StentMesh, the fitted surface V (#V×3), and the
 /// ProximalSite (all LPS mm). Output: Measurements, mm / degrees / % / ratio.

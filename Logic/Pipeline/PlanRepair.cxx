@@ -196,6 +196,16 @@ void ChooseAndSimulateDevice(const WallDistanceField& wall,
   report.Begin("SelectDevice", "Choosing the stent graft from the device catalogue");
   plan.selection = SelectDevice(SizingFromMeasurements(plan.measurements), params.catalog, params.selection);
   plan.simulatedFamily = FamilyToSimulate(plan.selection);
+  if (plan.simulatedFamily < 0 && plan.centerlines.Partial())
+  {
+    const std::string why = "The plan is partial: the scan ends above the iliac landing zones, so the limbs cannot "
+                            "be sized and no graft is simulated";
+    if (request.requireSimulatedGraft)
+      throw AlgorithmError(why + " for outputSimulatedStentModel; give a scan that covers the common iliac "
+                                 "arteries to their bifurcations.");
+    report.Warn(why + "; its sizes, seal lengths, oversizing and fit check are not available.");
+    return;
+  }
   if (plan.simulatedFamily < 0)
   {
     const std::string why = "No catalogue device has a main body and both limbs within the oversizing ranges (" +

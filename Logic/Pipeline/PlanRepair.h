@@ -19,6 +19,9 @@
 ///
 /// The simulated graft expands against the lumen (it presses on the thrombus, not through it);
 /// sizing uses the diameters each family's IFU names (outer wall for the shipped catalogue).
+/// A **partial plan** (the scan ends 10–40 mm below the bifurcation: LabelAortoIliacTree.h,
+/// MeasureAnatomy.h) has no limb sizes, so no graft is simulated: a warning says so, the limb
+/// checks are indeterminate, and the fit check is not available.
 ///
 /// Memory: the CT is taken by pointer and this function drops its reference once the lumen is
 /// segmented, keeping (when the plan goes on to the measurements) only a crop around the lumen,
@@ -29,7 +32,7 @@
 /// Frames and units: every point LPS mm, diameters and lengths mm, angles degrees.
 /// Errors: InputError and AlgorithmError from the stages (their messages name the value seen and
 /// what was expected), and an AlgorithmError when `requireSimulatedGraft` is set and no family
-/// has a main body and both limbs within the oversizing ranges. On an exception nothing is
+/// has a main body and both limbs within the oversizing ranges (or the plan is partial). On an exception nothing is
 /// returned; warnings already reported through PlanObserver::warn stay reported.
 #pragma once
 

@@ -127,7 +127,20 @@ StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& p)
       const double origin = InternalIliacOriginAbscissa(tree, side);
       length = std::isfinite(origin) ? origin - gap - 5.0 : 60.0;
     }
-    length = std::min(length, iliac[side]->LengthMm() - gap);
+    const double iliacLength = iliac[side]->LengthMm();
+    if (std::isfinite(tree.iliacCoverageMm[side]) && iliacLength < gap + p.ringSpacingMm)
+    {
+      // The scan cuts this iliac short (a partial plan): the leg's rings are evenly spaced over the
+      // stretch in view, at most ringSpacingMm apart, the first at most `gap` down — the leg holds
+      // the trunk's connection element; nothing is measured on it.
+      const double first = std::min(gap, iliacLength / 3.0), last = iliacLength - std::min(1.0, iliacLength / 3.0);
+      const int intervals = std::max(1, static_cast<int>(std::ceil((last - first) / p.ringSpacingMm - 1e-9)));
+      if (last > first)
+        for (int k = 0; k <= intervals; ++k)
+          legs[side].push_back(first + (last - first) * k / intervals);
+      continue;
+    }
+    length = std::min(length, iliacLength - gap);
     for (double s = gap; s <= gap + length + 1e-9; s += p.ringSpacingMm)
       legs[side].push_back(s);
   }

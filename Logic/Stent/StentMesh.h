@@ -17,7 +17,10 @@
 /// lies exactly at the site (measurement (a) is read there); each leg starts 3 × startRadiusMm
 /// down its iliac (so the two first leg rings do not touch) and runs
 /// `legLengthMm` (0: to 5 mm above the internal iliac origin where the axes meet — VesselOrigins.h —, or 60 mm
-/// without one).
+/// without one). On an iliac the scan cuts short (CenterlineTree::iliacCoverageMm, a partial plan)
+/// with no room for that, the leg's rings are evenly spaced over the stretch in view instead
+/// (from min(3 × startRadiusMm, L/3) to L − min(1 mm, L/3), at most ringSpacingMm apart; L its
+/// centerline's length): the leg only carries the connection element, nothing is read off it.
 ///
 /// **Connection element.** Stiffness acts along *s-chains* (vertex sequences along the vessel)
 /// and around *rings*. Across the junction the chains continue: the trunk's right half

@@ -5,13 +5,10 @@
 // std::mt19937(case number) — and the pipeline runs from the case's seed. The labelled Y must come
 // out on every case, with the iliacs on the patient's sides.
 #include <algorithm>
-#include <fstream>
-#include <random>
-#include <regex>
-#include <sstream>
 
 #include <gtest/gtest.h>
 
+#include "AvtSupport.h"
 #include "Common/ImageGeometry.h"
 #include "IO/ReadCtImage.h"
 #include "PipelineSupport.h"
@@ -22,45 +19,6 @@ namespace sgp
 namespace
 {
 
-const std::string sharedDir = SGP_SHARED_DIR;
-
-itk::Index<3> SeedOf(const std::string& caseName)
-{
-  std::ifstream in(sharedDir + "/data/avt/seeds.json");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string json = text.str();
-  const auto at = json.find("\"" + caseName + "\"");
-  std::smatch match;
-  const std::string rest = json.substr(at == std::string::npos ? json.size() : at);
-  if (!std::regex_search(rest, match, std::regex(R"("seed_ijk"\s*:\s*\[\s*(\d+)\s*,\s*(\d+)\s*,\s*(\d+))")))
-    throw std::runtime_error("no seed for " + caseName + " in " + sharedDir + "/data/avt/seeds.json");
-  return { { std::stol(match[1]), std::stol(match[2]), std::stol(match[3]) } };
-}
-
-CtImage::Pointer PaintCt(const LabelImage& mask, unsigned seed)
-{
-  auto ct = CtImage::New();
-  ct->CopyInformation(&mask);
-  ct->SetRegions(mask.GetLargestPossibleRegion());
-  ct->Allocate();
-  const auto size = mask.GetLargestPossibleRegion().GetSize();
-  const auto bounds = ImageBoundsLps(mask);
-  std::mt19937 generator(seed);
-  std::normal_distribution<double> noise(0.0, 15.0);
-  long flat = 0;
-  for (long k = 0; k < long(size[2]); ++k)
-  {
-    const double z = IndexToLps(mask, { { 0, 0, k } }).z();
-    const double lumenHu = 300.0 + 100.0 * (z - bounds[4]) / (bounds[5] - bounds[4]);
-    for (long j = 0; j < long(size[1]); ++j)
-      for (long i = 0; i < long(size[0]); ++i, ++flat)
-        ct->GetBufferPointer()[flat] =
-          static_cast<short>(std::lround((mask.GetBufferPointer()[flat] ? lumenHu : 40.0) + noise(generator)));
-  }
-  return ct;
-}
-
 class AvtCase : public ::testing::TestWithParam<std::string>
 {
 };
@@ -68,9 +26,9 @@ class AvtCase : public ::testing::TestWithParam<std::string>
 TEST_P(AvtCase, LabelledYWithIliacsOnThePatientsSides)
 {
   const std::string name = GetParam();
-  const auto mask = ReadLabelMap(sharedDir + "/data/avt/avt_dongyang_" + name + ".seg.nrrd");
-  const auto ct = PaintCt(*mask, static_cast<unsigned>(name[1] - '0'));
-  const Point3 seed = IndexToLps(*mask, SeedOf(name));
+  const auto mask = ReadLabelMap(testing::AvtMaskPath(name));
+  const auto ct = testing::PaintAvtCt(*mask, static_cast<unsigned>(name[1] - '0'));
+  const Point3 seed = IndexToLps(*mask, testing::AvtSeed(name));
   const LabelImage::Pointer lumen = GrowLumenRegion(*ct, seed, RegionGrowingParams{}).mask;
   const CenterlineTree tree = testing::CenterlinesFromMask(*lumen);
 
@@ -106,10 +64,10 @@ TEST_P(AvtCase, LabelledYWithIliacsOnThePatientsSides)
 TEST_P(AvtCase, MeasureModeStentSurfaceSettlesOnTheWallAndMeasuresPlausibly)
 {
   const std::string name = GetParam();
-  const auto mask = ReadLabelMap(sharedDir + "/data/avt/avt_dongyang_" + name + ".seg.nrrd");
-  const auto ct = PaintCt(*mask, static_cast<unsigned>(name[1] - '0'));
+  const auto mask = ReadLabelMap(testing::AvtMaskPath(name));
+  const auto ct = testing::PaintAvtCt(*mask, static_cast<unsigned>(name[1] - '0'));
   // As the CLI runs it: site, mesh from the site, wall field around the rings, fit, measurements.
-  const testing::MeasuredPlan plan = testing::MeasureFromCt(*ct, IndexToLps(*mask, SeedOf(name)));
+  const testing::MeasuredPlan plan = testing::MeasureFromCt(*ct, IndexToLps(*mask, testing::AvtSeed(name)));
   const ActiveContourResult& r = plan.fit;
   std::cout << name << ": " << plan.mesh.V.rows() << " vertices, " << r.iterations << " iterations, site from "
             << ToString(plan.site.source) << std::endl;
