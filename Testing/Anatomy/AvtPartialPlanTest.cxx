@@ -5,6 +5,7 @@
 // coverage. Cropped 5 mm below, a clean error that names it.
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <vector>
 #include <tuple>
@@ -75,6 +76,8 @@ TEST_P(AvtCroppedBelowTheBifurcation, PartialPlanWithTheWholeScansAorticValues)
   const AvtScan& scan = Scan(name);
   const testing::MeasuredPlan plan = testing::MeasureFromCt(*CutBelowTheBifurcation(scan, below), scan.seed);
   const Measurements &m = plan.measurements, &whole = scan.whole.measurements;
+  std::cout << name << " cut " << below << " mm below B: iliac coverage " << plan.tree.iliacCoverageMm[0] << " / "
+            << plan.tree.iliacCoverageMm[1] << " mm (nan: whole)" << std::endl;
   // The aortic part is the whole scan's: the same site, (a)–(c) within 0.3 mm and (d) within
   // 0.5 mm — the trunk's last rings sit 3 stent radii above the skeleton's junction, which moves
   // with the cut (up to 3 mm here), and the fit near them with it (measured: ≤ 0.28 mm) — and α
