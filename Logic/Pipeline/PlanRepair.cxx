@@ -1,6 +1,7 @@
 #include "Pipeline/PlanRepair.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <future>
 #include <utility>
@@ -196,7 +197,10 @@ void ChooseAndSimulateDevice(const WallDistanceField& wall,
   report.Begin("SelectDevice", "Choosing the stent graft from the device catalogue");
   plan.selection = SelectDevice(SizingFromMeasurements(plan.measurements), params.catalog, params.selection);
   plan.simulatedFamily = FamilyToSimulate(plan.selection);
-  if (plan.simulatedFamily < 0 && plan.centerlines.Partial())
+  // A partial plan whose scan ends above a limb's landing zone: nothing to size that limb on.
+  const bool limbUnsized = std::isnan(plan.measurements.Value("rightIliacLumenDiameter")) ||
+                           std::isnan(plan.measurements.Value("leftIliacLumenDiameter"));
+  if (plan.simulatedFamily < 0 && plan.centerlines.Partial() && limbUnsized)
   {
     const std::string why = "The plan is partial: the scan ends above the iliac landing zones, so the limbs cannot "
                             "be sized and no graft is simulated";
