@@ -99,11 +99,7 @@ TEST_P(AvtCase, MeasureModeStentSurfaceSettlesOnTheWallAndMeasuresPlausibly)
   // masks do not label: their site is the top of the aorta, and a warning says so.
   const bool chest = name == "D1" || name == "D4";
   EXPECT_EQ(plan.site.source, chest ? ProximalSiteSource::Top : ProximalSiteSource::Renal);
-  const auto warned = [&](const std::string& part)
-  {
-    return std::any_of(m.warnings.begin(), m.warnings.end(),
-                       [&](const std::string& w) { return w.find(part) != std::string::npos; });
-  };
+  const auto warned = [&](const std::string& part) { return testing::AnyWarningContains(m.warnings, part); };
   if (chest)
   {
     ASSERT_FALSE(plan.site.warning.empty());

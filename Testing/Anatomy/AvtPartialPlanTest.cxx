@@ -3,12 +3,9 @@
 // whole scan gives taken away. The Y is found and the aortic part of the plan equals the whole
 // scan's; the values that need more of the iliacs are not measured, with a warning naming the
 // coverage. Cropped 5 mm below, a clean error that names it.
-#include <algorithm>
 #include <cmath>
 #include <iostream>
-#include <map>
 #include <vector>
-#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -33,24 +30,16 @@ struct AvtScan
   testing::MeasuredPlan whole;
 };
 
-/// Each case painted and planned once (the whole scan's plan is the reference).
-const AvtScan& Scan(const std::string& name)
+/// The case painted and planned whole (the reference).
+AvtScan Scan(const std::string& name)
 {
-  static std::map<std::string, AvtScan> scans;
-  auto found = scans.find(name);
-  if (found == scans.end())
-  {
-    const auto mask = ReadLabelMap(testing::AvtMaskPath(name));
-    AvtScan scan;
-    scan.ct = testing::PaintAvtCt(*mask, static_cast<unsigned>(name[1] - '0'));
-    scan.seed = IndexToLps(*mask, testing::AvtSeed(name));
-    scan.whole = testing::MeasureFromCt(*scan.ct, scan.seed);
-    found = scans.emplace(name, std::move(scan)).first;
-  }
-  return found->second;
+  const auto mask = ReadLabelMap(testing::AvtMaskPath(name));
+  AvtScan scan;
+  scan.ct = testing::PaintAvtCt(*mask, static_cast<unsigned>(name[1] - '0'));
+  scan.seed = IndexToLps(*mask, testing::AvtSeed(name));
+  scan.whole = testing::MeasureFromCt(*scan.ct, scan.seed);
+  return scan;
 }
-
-using Crop = std::tuple<std::string, double>;
 
 /// `scan` cut so that its lowest slice holds the level `below` mm under the whole scan's
 /// bifurcation B (the slice whose extent contains it).
@@ -60,20 +49,10 @@ CtImage::Pointer CutBelowTheBifurcation(const AvtScan& scan, double below)
   return testing::CropBelow(*scan.ct, b - below - scan.ct->GetSpacing()[2] / 2);
 }
 
-bool Warned(const Measurements& m, const std::string& part)
+/// The partial plan of `scan` cut `below` mm under its bifurcation, against the whole scan's.
+void ExpectPartialPlanWithTheWholeScansAorticValues(const std::string& name, const AvtScan& scan, double below)
 {
-  return std::any_of(m.warnings.begin(), m.warnings.end(),
-                     [&](const std::string& w) { return w.find(part) != std::string::npos; });
-}
-
-class AvtCroppedBelowTheBifurcation : public ::testing::TestWithParam<Crop>
-{
-};
-
-TEST_P(AvtCroppedBelowTheBifurcation, PartialPlanWithTheWholeScansAorticValues)
-{
-  const auto [name, below] = GetParam();
-  const AvtScan& scan = Scan(name);
+  SCOPED_TRACE(name + " cut " + FormatNumber(below, 0) + " mm below B");
   const testing::MeasuredPlan plan = testing::MeasureFromCt(*CutBelowTheBifurcation(scan, below), scan.seed);
   const Measurements &m = plan.measurements, &whole = scan.whole.measurements;
   std::cout << name << " cut " << below << " mm below B: iliac coverage " << plan.tree.iliacCoverageMm[0] << " / "
@@ -96,7 +75,7 @@ TEST_P(AvtCroppedBelowTheBifurcation, PartialPlanWithTheWholeScansAorticValues)
   {
     // 40 mm of straight-running iliacs can be a whole Y (60 mm of vessel and 40 mm of descent
     // beyond the junction): then nothing is left out.
-    EXPECT_FALSE(Warned(m, "Partial plan"));
+    EXPECT_FALSE(testing::AnyWarningContains(m.warnings, "Partial plan"));
     return;
   }
   double shortest = 1e9;
@@ -109,8 +88,8 @@ TEST_P(AvtCroppedBelowTheBifurcation, PartialPlanWithTheWholeScansAorticValues)
     SCOPED_TRACE(s);
     shortest = std::min(shortest, coverage);
     EXPECT_GE(coverage, 10.0); // the partial plan's minimum, else the error below
-    EXPECT_TRUE(Warned(m, "Partial plan: the scan ends " + FormatNumber(coverage, 1) +
-                            " mm below the aortic bifurcation along the " + s));
+    EXPECT_TRUE(testing::AnyWarningContains(m.warnings, "Partial plan: the scan ends " + FormatNumber(coverage, 1) +
+                                                          " mm below the aortic bifurcation along the " + s));
     // The tortuosity and the access diameter need the iliac down to the groin, the iliac length
     // the internal iliac's own axis (its origin is where the axes meet), which the scan cuts: never
     // measured (D4 cut 40 mm below read 57.8 mm for the whole scan's 53.1 mm). The landing zone
@@ -145,35 +124,11 @@ TEST_P(AvtCroppedBelowTheBifurcation, PartialPlanWithTheWholeScansAorticValues)
   }
 }
 
-// D4 cut 10 mm below B is left out: its left common iliac is a separate lumen in the last two
-// slices only (3 mm each) and the thinning keeps no skeleton there — no Y yet (issue 13 open).
-INSTANTIATE_TEST_SUITE_P(RealAnatomy,
-                         AvtCroppedBelowTheBifurcation,
-                         ::testing::Values(Crop{ "D1", 10.0 },
-                                           Crop{ "D1", 20.0 },
-                                           Crop{ "D1", 40.0 },
-                                           Crop{ "D2", 10.0 },
-                                           Crop{ "D2", 20.0 },
-                                           Crop{ "D2", 40.0 },
-                                           Crop{ "D3", 10.0 },
-                                           Crop{ "D3", 20.0 },
-                                           Crop{ "D3", 40.0 },
-                                           Crop{ "D4", 20.0 },
-                                           Crop{ "D4", 40.0 }),
-                         [](const auto& info) {
-                           return std::get<0>(info.param) + "_" + std::to_string(int(std::get<1>(info.param))) +
-                                  "mmBelow";
-                         });
-
 // Cut 5 mm below B, the iliacs are not yet apart (or apart for a slice): one clean error that
 // says what the scan covers.
-class AvtCroppedJustBelowTheBifurcation : public ::testing::TestWithParam<std::string>
+void ExpectErrorNamingTheCoverage(const AvtScan& scan)
 {
-};
-
-TEST_P(AvtCroppedJustBelowTheBifurcation, ErrorNamesTheCoverage)
-{
-  const AvtScan& scan = Scan(GetParam());
+  SCOPED_TRACE("cut 5 mm below B");
   const CtImage::Pointer ct = CutBelowTheBifurcation(scan, 5.0);
   try
   {
@@ -193,7 +148,24 @@ TEST_P(AvtCroppedJustBelowTheBifurcation, ErrorNamesTheCoverage)
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(RealAnatomy, AvtCroppedJustBelowTheBifurcation, ::testing::Values("D1", "D2", "D3", "D4"));
+// One test per case, so that its whole-scan plan (the reference) is made once: CTest runs each
+// test in a process of its own. D4 cut 10 mm below B is left out: its left common iliac is a
+// separate lumen in the last two slices only (3 mm each) and the thinning keeps no skeleton
+// there — no Y yet (issue 13 open).
+class AvtCutBelowTheBifurcation : public ::testing::TestWithParam<std::string>
+{
+};
+
+TEST_P(AvtCutBelowTheBifurcation, PartialPlansCut10To40mmBelowAndAnErrorCut5mmBelow)
+{
+  const std::string name = GetParam();
+  const AvtScan scan = Scan(name);
+  for (const double below : name == "D4" ? std::vector<double>{ 20.0, 40.0 } : std::vector<double>{ 10.0, 20.0, 40.0 })
+    ExpectPartialPlanWithTheWholeScansAorticValues(name, scan, below);
+  ExpectErrorNamingTheCoverage(scan);
+}
+
+INSTANTIATE_TEST_SUITE_P(RealAnatomy, AvtCutBelowTheBifurcation, ::testing::Values("D1", "D2", "D3", "D4"));
 
 } // namespace
 } // namespace sgp

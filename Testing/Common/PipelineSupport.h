@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -19,6 +21,13 @@
 
 namespace sgp::testing
 {
+
+/// Whether any of `warnings` contains `part`.
+inline bool AnyWarningContains(const std::vector<std::string>& warnings, const std::string& part)
+{
+  return std::any_of(warnings.begin(), warnings.end(),
+                     [&](const std::string& w) { return w.find(part) != std::string::npos; });
+}
 
 inline CenterlineTree CenterlinesFromMask(const LabelImage& mask)
 {

@@ -267,13 +267,9 @@ TEST_P(PartialPlanOnACutScan, AorticPartMadeIliacValuesUnmeasured)
   EXPECT_NEAR(m.Value("maxAneurysmLumenDiameter"), truth.maxAneurysmDiameter, diameterMm);
   EXPECT_NEAR(m.Value("distalNeckMinLumenDiameter"), truth.distalNeckMinDiameter, diameterMm);
   EXPECT_NEAR(m.Value("proximalNeckLength"), truth.proximalNeckLength, NeckLengthUncertaintyMm);
-  const auto warned = [&](const std::string& part)
-  {
-    return std::any_of(plan.warnings.begin(), plan.warnings.end(),
-                       [&](const std::string& w) { return w.find(part) != std::string::npos; });
-  };
-  EXPECT_TRUE(warned("Partial plan: the scan ends "));
-  EXPECT_TRUE(warned("The plan is partial: the scan ends above the iliac landing zones"));
+  EXPECT_TRUE(testing::AnyWarningContains(plan.warnings, "Partial plan: the scan ends "));
+  EXPECT_TRUE(
+    testing::AnyWarningContains(plan.warnings, "The plan is partial: the scan ends above the iliac landing zones"));
   EXPECT_FALSE(plan.HasGraft());
   for (const PlanValue& v : PlanReturnValues(plan))
     if (v.name.find("Iliac") != std::string::npos || v.name.find("Access") != std::string::npos ||
