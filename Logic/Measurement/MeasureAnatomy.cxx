@@ -80,6 +80,13 @@ std::pair<RingDiameters, RingDiameters> MeasureNeckDiameters(const MeasureContex
   out.values.push_back(
     Diameter("neckLumenDiameter15mm", b, "aorta",
              "(b) mean ring diameter 15 mm below the proximal site along the aortic centerline, lumen"));
+  const std::pair<const char*, const RingDiameters*> levels[2] = { { "(a)", &a }, { "(b)", &b } };
+  for (const auto& [level, ring] : levels)
+    if (ring->mouthVertices > 0)
+      out.warnings.push_back(std::string(level) + "'s ring crosses a branch mouth (" +
+                             std::to_string(ring->mouthVertices) + " of its vertices lie more than " +
+                             FormatNumber(BranchMouthRadiusFactor) +
+                             " x its median radius from the centerline); the diameters through them are left out.");
   return { a, b };
 }
 

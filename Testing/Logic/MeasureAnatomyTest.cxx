@@ -302,6 +302,58 @@ TEST(MeasureDiameters, CircularRings_ExactDiametersAndInscribedPolygonArea)
       EXPECT_GT(profiles[seg].rings[k].abscissaMm, profiles[seg].rings[k - 1].abscissaMm);
 }
 
+TEST(MeasureDiameters, BranchMouthVertices_LeftOutOfTheRingsDiameters)
+{
+  // The circular rings of radius 4 mm; on trunk ring 2 one vertex pushed 5 mm further out (into a
+  // branch's mouth, as the balloon does at an ostium) and on trunk ring 4 two neighbours 3 mm out;
+  // ring 3 squeezed into an ellipse of aspect 1.5 (radii 4.8 and 3.2 mm), the vessel's own shape.
+  const testing::YPhantom y = testing::MakeYPhantom(1.0);
+  StentMeshParams params;
+  params.startRadiusMm = 4.0;
+  const StentMesh mesh = BuildStentMesh(y.tree, params);
+  ASSERT_GE(mesh.RingsIn(TrunkSegment), 5);
+  const int n = mesh.verticesPerRing;
+  Points V = mesh.V;
+  const auto push = [&](int ring, int column, double mm)
+  {
+    const int i = mesh.Id(TrunkSegment, ring, column);
+    const Eigen::Vector3d c = mesh.centre.row(i).transpose(), d = V.row(i).transpose() - c;
+    V.row(i) = (c + d * ((d.norm() + mm) / d.norm())).transpose();
+  };
+  push(2, 3, 5.0);
+  push(4, 5, 3.0);
+  push(4, 6, 3.0);
+  Eigen::Vector3d u = Eigen::Vector3d::Zero(); // ring 3's frame: its vertex 0 direction
+  {
+    const int i0 = mesh.Id(TrunkSegment, 3, 0);
+    u = (V.row(i0).transpose() - mesh.centre.row(i0).transpose()).normalized();
+  }
+  for (int j = 0; j < n; ++j)
+  {
+    const int i = mesh.Id(TrunkSegment, 3, j);
+    const Eigen::Vector3d c = mesh.centre.row(i).transpose(), d = V.row(i).transpose() - c;
+    const Eigen::Vector3d along = d.dot(u) * u, across = d - along;
+    V.row(i) = (c + 1.2 * along + 0.8 * across).transpose();
+  }
+  const DiameterProfile trunk = MeasureRingDiameters(mesh, V)[TrunkSegment];
+  const double polygonFactor = std::sqrt(n / (2 * M_PI) * std::sin(2 * M_PI / n));
+  // Ring 2: the diameter through the pushed vertex left out, the rest exactly 8 mm (round-off
+  // only); for the area the vertex counts at the median radius, so the polygon is the regular one.
+  EXPECT_EQ(trunk.rings[2].mouthVertices, 1);
+  EXPECT_NEAR(trunk.rings[2].meanMm, 8.0, 1e-9);
+  EXPECT_NEAR(trunk.rings[2].maxMm, 8.0, 1e-9);
+  EXPECT_NEAR(trunk.rings[2].areaMm, 8.0 * polygonFactor, 1e-9);
+  EXPECT_EQ(trunk.rings[4].mouthVertices, 2);
+  EXPECT_NEAR(trunk.rings[4].meanMm, 8.0, 1e-9);
+  // Ring 3: an ellipse is the vessel, not a mouth: every diameter kept, from 6.4 to 9.6 mm.
+  EXPECT_EQ(trunk.rings[3].mouthVertices, 0);
+  EXPECT_NEAR(trunk.rings[3].minMm, 6.4, 1e-9);
+  EXPECT_NEAR(trunk.rings[3].maxMm, 9.6, 1e-9);
+  // The untouched rings: none.
+  EXPECT_EQ(trunk.rings[1].mouthVertices, 0);
+  EXPECT_NEAR(trunk.rings[1].meanMm, 8.0, 1e-9);
+}
+
 TEST(MeasureDiameters, RequestedStart_FirstRingThereAndInterpolationLinearBetweenRings)
 {
   const testing::YPhantom y = testing::MakeYPhantom(1.0);
