@@ -113,6 +113,28 @@ Tube SampledTube(const std::string& name, const std::vector<Point3>& axis, const
            largest };
 }
 
+/// How far below the point where a branch of radius `rho` leaves a vessel's axis (direction `a`,
+/// lumen radius `R` there) the lowest point of its ostium on the vessel's wall lies, along `a`:
+/// the lowest point, over the branch's surface (p = t·d + ρ·e, e ⊥ d, at every 0.1° of e) where it
+/// crosses the vessel's wall cylinder (|p − (p·a)a| = R, the outer root in t). ρ exactly for a
+/// branch perpendicular to the vessel.
+double OstiumLowerEdgeDepthMm(double R, double rho, const Eigen::Vector3d& d, const Eigen::Vector3d& a)
+{
+  const Eigen::Vector3d e1 = d.unitOrthogonal(), e2 = d.cross(e1);
+  const auto radial = [&a](const Eigen::Vector3d& v) { return Eigen::Vector3d(v - v.dot(a) * a); };
+  const Eigen::Vector3d pd = radial(d);
+  double lowest = 0.0;
+  for (int k = 0; k < 3600; ++k)
+  {
+    const double psi = 2.0 * pi * k / 3600.0;
+    const Eigen::Vector3d e = std::cos(psi) * e1 + std::sin(psi) * e2, pe = radial(e);
+    const double qa = pd.squaredNorm(), qb = 2.0 * rho * pd.dot(pe), qc = rho * rho * pe.squaredNorm() - R * R;
+    const double t = (-qb + std::sqrt(std::max(0.0, qb * qb - 4.0 * qa * qc))) / (2.0 * qa);
+    lowest = std::min(lowest, t * d.dot(a) + rho * e.dot(a));
+  }
+  return -lowest;
+}
+
 Anatomy BuildAnatomy(const PhantomParams& p)
 {
   Anatomy anatomy;
@@ -120,7 +142,6 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   const double rNeck = p.neckDiameterMm / 2, rDistal = p.distalNeckDiameterMm / 2;
   const double sacBottom = distalNeckLengthMm, sacTop = sacBottom + p.aneurysmLengthMm;
   const double siteZ = sacTop + p.neckLengthMm; // lower edge of the lowest (right) renal ostium
-  const double rightRenalZ = siteZ + renalRadiusMm, leftRenalZ = rightRenalZ + 6.0;
   const double smaZ = siteZ + 20.0, coeliacZ = siteZ + 35.0, topZ = siteZ + 80.0;
   const double amplitude = p.maxAneurysmDiameterMm / 2 - 0.5 * (rNeck + rDistal);
   const auto radiusAtZ = [=](double z)
@@ -154,6 +175,13 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   if (wallMm > 0.0)
     anatomy.wall = std::make_unique<AorticWall>(p, radiusAtZ, sacBottom, sacTop, siteZ, topZ, beta);
   const AorticWall* wall = anatomy.wall.get();
+  // The renals run laterally and 10 mm posteriorly per 64 mm (to the hila below); the right one
+  // leaves the neck's axis so that its ostium's lowest point on the lumen's wall is at the site.
+  const Eigen::Vector3d rightRenalDirection = Point3(-64.0, 10.0, 0.0).normalized();
+  const double siteLumenRadius = wall ? wall->LumenRadius(siteZ) : rNeck;
+  const double rightRenalZ =
+    siteZ + OstiumLowerEdgeDepthMm(siteLumenRadius, renalRadiusMm, rightRenalDirection, neckDirection);
+  const double leftRenalZ = rightRenalZ + 6.0;
   if (wall && wall->HasThrombus())
   {
     // The lumen off-centre in the thrombus: a tube along its own centerline (2 mm samples; the

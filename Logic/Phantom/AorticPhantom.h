@@ -14,7 +14,9 @@
 ///  - **renal arteries** (radius 3 mm): the right one at the lower level (it is the lowest renal;
 ///    the lower edge of its ostium is the proximal implantation site), the left 6 mm higher;
 ///    they run horizontally (laterally and slightly posteriorly) to the kidneys' hila. The patient's right is −x in
-///    LPS.
+///    LPS. The right renal leaves the aortic axis where its ostium's lowest point on the lumen's
+///    wall lies exactly at the site: 3 mm above it on a vertical neck, more on a leaning one
+///    (β > 0), where the horizontal renal leaves the neck's axis obliquely (+1.2 mm at β = 60°).
 ///  - **superior mesenteric** and **coeliac** arteries leave anteriorly (−y) above the renals.
 ///  - **common iliacs** leave the bifurcation 25° from the midline, 55 mm long, then split into
 ///    **external** (continuing caudally) and **internal** iliacs (posterior and lateral).

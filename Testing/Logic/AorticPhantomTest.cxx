@@ -107,6 +107,61 @@ TEST(AorticPhantom, NeckAngle_NeckAxisLeansAnteriorlyByBeta)
   EXPECT_EQ(LabelAt(phantom, straight), TissueLabel); // 40·sin 40° = 26 mm from the neck's axis
 }
 
+// The proximal site is the lower edge of the lowest renal's ostium on the lumen's wall (evar-sizing
+// §2.4): found here by brute force — the lowest point, along the neck's axis, of the renal's lumen
+// on the neck's wall, over a 0.05 mm grid — on a vertical neck (the renal perpendicular to it: its
+// axis a renal radius above the site) and on leaning ones (the horizontal renal leaves the neck
+// obliquely, so its lowest wall point lies lower: at 60° by 1.2 mm, which putting the renal's axis
+// a radius above the site missed).
+class RenalOstium : public ::testing::TestWithParam<double>
+{
+};
+
+TEST_P(RenalOstium, LowerEdgeOnTheWallAtTheSite)
+{
+  PhantomParams p;
+  p.neckAngleDeg = GetParam();
+  p.sizeVoxels = { 40, 40, 40 }; // the truth is what is tested, not the volume
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  const PhantomVessel& aorta = Vessel(phantom, "aorta");
+  const PhantomVessel& renal = Vessel(phantom, "rightRenal");
+  const Eigen::Vector3d up = (aorta.axis.row(0) - aorta.axis.row(1)).transpose().normalized();
+  const Point3 origin = renal.axis.row(0).transpose();
+  const Eigen::Vector3d along = (renal.axis.row(1) - renal.axis.row(0)).transpose().normalized();
+  const double R = p.neckDiameterMm / 2, rho = renal.radiusMm[0];
+  Point3 site = Point3::Zero();
+  for (const auto& l : phantom.truth.landmarks)
+    if (l.name == "proximalImplantationSite")
+      site = l.lps;
+  // The grid spans the ostium: within 8 mm of where the renal's axis meets the wall.
+  const Point3 centre = origin + along * R;
+  const double step = 0.05;
+  double lowest = 1e9;
+  for (double i = -8; i <= 8; i += step)
+    for (double j = -8; j <= 8; j += step)
+      for (double k = -8; k <= 8; k += step)
+      {
+        const Point3 q = centre + Point3(i, j, k);
+        const Eigen::Vector3d w = q - origin;
+        const double radial = (w - w.dot(up) * up).norm();
+        if (radial > R || radial < R - step) // on the neck's wall (a shell one grid step thick)
+          continue;
+        const double t = std::max(0.0, w.dot(along));
+        if ((w - t * along).norm() > rho) // in the renal's lumen
+          continue;
+        lowest = std::min(lowest, w.dot(up));
+      }
+  const double siteHeight = (site - origin).dot(up);
+  // Grid step plus shell thickness: the brute force finds the edge to 0.1 mm.
+  EXPECT_NEAR(siteHeight, lowest, 0.1) << "beta " << GetParam();
+  if (GetParam() == 0.0)
+  {
+    EXPECT_NEAR(siteHeight, -rho, 0.1); // perpendicular: a renal radius below its axis
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AorticPhantom, RenalOstium, ::testing::Values(0.0, 30.0, 60.0));
+
 TEST(AorticPhantom, ObliqueFlippedGrid_RightIliacStaysOnPatientRight)
 {
   PhantomParams p;
