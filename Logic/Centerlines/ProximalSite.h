@@ -9,7 +9,10 @@
 ///     renal's axis is the chord of its centerline from 1 to 16 mm outside the aortic wall (the
 ///     skeleton's junction lies on the aortic axis, up to a renal radius away from the true
 ///     branching level), its ostium centre is where that axis crosses the aortic wall (the
-///     cylinder of the aorta's inscribed radius around the aortic centerline), and its lower edge
+///     cylinder of the aorta's inscribed radius around the aortic axis there — the line fitted to
+///     the aortic centerline within 1.5 aortic radii, 8–20 mm, of the junction: the centerline's
+///     local tangent is tilted toward the branch, and a parent radius away that tilt moved the
+///     ostium along the aorta by up to 2 mm), and its lower edge
 ///     lies ρ / sin φ further down (ρ: the renal's median inscribed radius there; φ: the angle
 ///     between the renal's axis and the aorta, clamped to ≥ 30°) — the point where the renal's
 ///     downstream wall line meets the aortic wall. The lowest of the renals is the site;
