@@ -149,9 +149,9 @@ void ExpectErrorNamingTheCoverage(const AvtScan& scan)
 }
 
 // One test per case, so that its whole-scan plan (the reference) is made once: CTest runs each
-// test in a process of its own. D4 cut 10 mm below B is left out: its left common iliac is a
-// separate lumen in the last two slices only (3 mm each) and the thinning keeps no skeleton
-// there — no Y yet (issue 13 open).
+// test in a process of its own. D4 cut 10 mm below B is left out: in its last two slices (3 mm
+// each) the two iliac lumens still touch diagonally, so the border extension repeats one
+// figure-of-eight section and the thinning keeps one line — no Y yet (issue 13 open).
 class AvtCutBelowTheBifurcation : public ::testing::TestWithParam<std::string>
 {
 };
