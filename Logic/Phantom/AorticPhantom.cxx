@@ -21,6 +21,7 @@ namespace
 
 constexpr double pi = 3.14159265358979323846;
 constexpr double renalRadiusMm = 3.0;
+constexpr double renalHilumLateralMm = 64.0, renalHilumPosteriorMm = 10.0; ///< from the renal's origin
 constexpr double visceralRadiusMm = 3.5;
 constexpr double distalNeckLengthMm = 20.0;
 constexpr double commonIliacLengthMm = 55.0;
@@ -175,9 +176,9 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   if (wallMm > 0.0)
     anatomy.wall = std::make_unique<AorticWall>(p, radiusAtZ, sacBottom, sacTop, siteZ, topZ, beta);
   const AorticWall* wall = anatomy.wall.get();
-  // The renals run laterally and 10 mm posteriorly per 64 mm (to the hila below); the right one
-  // leaves the neck's axis so that its ostium's lowest point on the lumen's wall is at the site.
-  const Eigen::Vector3d rightRenalDirection = Point3(-64.0, 10.0, 0.0).normalized();
+  // The renals run horizontally to their hila; the right one leaves the neck's axis so that its
+  // ostium's lowest point on the lumen's wall is at the site.
+  const Eigen::Vector3d rightRenalDirection = Point3(-renalHilumLateralMm, renalHilumPosteriorMm, 0.0).normalized();
   const double siteLumenRadius = wall ? wall->LumenRadius(siteZ) : rNeck;
   const double rightRenalZ =
     siteZ + OstiumLowerEdgeDepthMm(siteLumenRadius, renalRadiusMm, rightRenalDirection, neckDirection);
@@ -225,7 +226,7 @@ Anatomy BuildAnatomy(const PhantomParams& p)
       anatomy.wallTubes.push_back(StraightTube(prefix + "InternalIliacWall", internal, 0.55 * r));
     }
     const double renalZ = side == 0 ? rightRenalZ : leftRenalZ;
-    const Point3 hilum = onAxis(renalZ) + Point3(lateral * 64.0, 10.0, 0.0);
+    const Point3 hilum = onAxis(renalZ) + Point3(lateral * renalHilumLateralMm, renalHilumPosteriorMm, 0.0);
     anatomy.tubes.push_back(StraightTube(prefix + "Renal", { onAxis(renalZ), hilum }, renalRadiusMm));
     if (p.includeKidneys)
     {
