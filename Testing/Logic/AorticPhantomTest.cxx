@@ -27,6 +27,14 @@ const PhantomVessel& Vessel(const AorticPhantom& phantom, const std::string& nam
   throw std::runtime_error("no vessel " + name);
 }
 
+Point3 Landmark(const AorticPhantom& phantom, const std::string& name)
+{
+  for (const PhantomLandmark& l : phantom.truth.landmarks)
+    if (l.name == name)
+      return l.lps;
+  throw std::runtime_error("no landmark " + name);
+}
+
 /// The voxel nearest a point can lie half a voxel diagonal away (0.64 mm on 0.8 × 0.8 × 1.0 mm),
 /// so points are tested 1 mm inside and outside the analytic surface.
 constexpr double probeMm = 1.0;
@@ -93,13 +101,7 @@ TEST(AorticPhantom, NeckAngle_NeckAxisLeansAnteriorlyByBeta)
   EXPECT_NEAR(std::acos(neck.z()) * 180.0 / M_PI, 40.0, 1e-9);
   EXPECT_LT(neck.y(), 0.0);
   // Lengths along the aorta are kept: the site is 109 mm of axis above the bifurcation.
-  const Point3 site = [&]
-  {
-    for (const auto& l : phantom.truth.landmarks)
-      if (l.name == "proximalImplantationSite")
-        return l.lps;
-    return Point3(Point3::Zero());
-  }();
+  const Point3 site = Landmark(phantom, "proximalImplantationSite");
   EXPECT_NEAR((site - bend).norm() + 100.0, phantom.truth.sizing.proximalSiteToBifurcationLength, 1e-9);
   // The labels follow the bent neck: on its axis is lumen, where the straight aorta would be is not.
   const Point3 onNeck = bend + 40.0 * neck, straight = bend + Point3(0, 0, 40.0);
@@ -129,10 +131,7 @@ TEST_P(RenalOstium, LowerEdgeOnTheWallAtTheSite)
   const Point3 origin = renal.axis.row(0).transpose();
   const Eigen::Vector3d along = (renal.axis.row(1) - renal.axis.row(0)).transpose().normalized();
   const double R = p.neckDiameterMm / 2, rho = renal.radiusMm[0];
-  Point3 site = Point3::Zero();
-  for (const auto& l : phantom.truth.landmarks)
-    if (l.name == "proximalImplantationSite")
-      site = l.lps;
+  const Point3 site = Landmark(phantom, "proximalImplantationSite");
   // The grid spans the ostium: within 8 mm of where the renal's axis meets the wall.
   const Point3 centre = origin + along * R;
   const double step = 0.05;
