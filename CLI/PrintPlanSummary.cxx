@@ -63,10 +63,17 @@ void PrintPlanSummary(const RepairPlan& plan, const std::string& acmMode, std::o
     if (plan.HasGraft())
     {
       const FitCheck& check = plan.fitCheck;
-      out << "Simulated graft (" << plan.selection.families[plan.simulatedFamily].family << "): proximal seal "
-          << FormatNumber(check.proximalSealLengthMm) << " mm, iliac seal right "
-          << FormatNumber(check.rightIliacSealLengthMm) << " mm / left " << FormatNumber(check.leftIliacSealLengthMm)
-          << " mm, covered ostia: " << check.CoveredOstia() << "; fit check " << (check.Passed() ? "passed" : "FAILED")
+      const auto seal = [](double mm)
+      { return std::isfinite(mm) ? FormatNumber(mm) + " mm" : std::string("not known"); };
+      out << "Simulated graft (" << plan.selection.families[plan.simulatedFamily].family
+          << (check.Complete() ? "" : ", its main body only: partial plan") << "): proximal seal "
+          << seal(check.proximalSealLengthMm) << ", iliac seal right " << seal(check.rightIliacSealLengthMm)
+          << " / left " << seal(check.leftIliacSealLengthMm) << ", covered ostia: " << check.CoveredOstia()
+          << "; fit check "
+          << (!check.Complete()
+                ? (check.findings.empty() ? "of the proximal part passed" : "of the proximal part FAILED")
+              : check.Passed() ? "passed"
+                               : "FAILED")
           << std::endl;
       for (const std::string& finding : check.findings)
         out << "  " << finding << std::endl;

@@ -55,6 +55,9 @@ struct CenterlineTree
   /// a whole (a partial Y, LabelAortoIliacTree.h): the values that need more of it are not measured. NaN: whole.
   std::array<double, 2> iliacCoverageMm{ std::numeric_limits<double>::quiet_NaN(),
                                          std::numeric_limits<double>::quiet_NaN() };
+  /// The scan's extent along LPS z (its voxel centres' lowest and highest z, mm); NaN: not known.
+  double scanLowestZMm = std::numeric_limits<double>::quiet_NaN();
+  double scanHighestZMm = std::numeric_limits<double>::quiet_NaN();
   /// The scan cuts an iliac short: the plan is partial.
   bool Partial() const { return std::isfinite(iliacCoverageMm[0]) || std::isfinite(iliacCoverageMm[1]); }
 

@@ -569,6 +569,8 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
   }
 
   CenterlineTree tree;
+  tree.scanLowestZMm = graph.scanLowestZMm;
+  tree.scanHighestZMm = graph.scanHighestZMm;
   const double reach = params.directionReachMm;
   const Point3 bifurcation = graph.nodes[y.node].position;
   tree.landmarks.push_back({ "aorticBifurcation", bifurcation });

@@ -204,10 +204,23 @@ ProximalSite FindProximalSite(const CenterlineTree& tree, const std::optional<Po
     {
       site.source = ProximalSiteSource::Top;
       site.abscissaMm = 0.0;
+      const Point3 top = aorta.points.row(0).transpose();
+      std::string extent;
+      if (std::isfinite(tree.scanHighestZMm))
+      {
+        // The aorta's top within its radius (and a voxel or two) of the scan's superior border:
+        // the scan is cut there, and the renal arteries may lie above it.
+        const bool cut = tree.scanHighestZMm - top.z() <= aorta.radiusMm[0] + 3.0;
+        extent = " The scan spans z " + FormatNumber(tree.scanLowestZMm, 1) + " to " +
+                 FormatNumber(tree.scanHighestZMm, 1) + " mm (LPS, inferior to superior); the aorta " +
+                 (cut ? "runs out of its superior border" : "ends inside it") + " at z " + FormatNumber(top.z(), 1) +
+                 " mm, " + FormatNumber(aorta.LengthMm(), 0) + " mm of centerline above the bifurcation" +
+                 (cut ? " (a scan that begins below the renal arteries shows none)." : ".");
+      }
       site.warning = "No renal artery was found on the aortic centerline and --lowestRenalOstium was not given; "
                      "the proximal implantation site is the top of the aortic centerline (" +
-                     FormatPoint(aorta.points.row(0).transpose()) +
-                     " mm LPS), so the neck values are measured from there. Place the lowestRenalOstium point.";
+                     FormatPoint(top) + " mm LPS), so the neck values are measured from there." + extent +
+                     " Place the lowestRenalOstium point.";
     }
   }
   site.lps = PositionAt(aorta, site.abscissaMm);

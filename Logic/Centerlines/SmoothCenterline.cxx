@@ -49,24 +49,30 @@ Centerline SmoothCenterline(const Centerline& raw, double stepMm, double smoothi
   const double fineStep = stepMm / 10.0;
   Resample(raw, fineStep, fine, fineRadii);
   const long n = static_cast<long>(fine.size());
-  std::vector<Point3> smooth(fine.size());
-  std::vector<double> smoothRadii(fine.size());
-  const long reach = smoothingMm > 0 ? static_cast<long>(std::ceil(3.0 * smoothingMm / fineStep)) : 0;
-  for (long i = 0; i < n; ++i)
+  // One Gaussian pass of width σ_i about each point i (a symmetric window: the ends stay put).
+  const auto smoothAt = [&](long i, double sigma, const auto& value)
   {
-    const long half = std::min({ reach, i, n - 1 - i }); // symmetric window: ends stay put
-    Point3 sum = Point3::Zero();
-    double radius = 0.0, weights = 0.0;
+    const long reach = sigma > 0 ? static_cast<long>(std::ceil(3.0 * sigma / fineStep)) : 0;
+    const long half = std::min({ reach, i, n - 1 - i });
+    decltype(value(i)) sum = value(i) * 0.0;
+    double weights = 0.0;
     for (long j = i - half; j <= i + half; ++j)
     {
-      const double x = (j - i) * fineStep / std::max(smoothingMm, 1e-9);
+      const double x = (j - i) * fineStep / std::max(sigma, 1e-9);
       const double w = std::exp(-0.5 * x * x);
-      sum += w * fine[j];
-      radius += w * fineRadii[j];
+      sum += w * value(j);
       weights += w;
     }
-    smooth[i] = sum / weights;
-    smoothRadii[i] = radius / weights;
+    return decltype(value(i))(sum / weights);
+  };
+  std::vector<double> smoothRadii(fine.size());
+  for (long i = 0; i < n; ++i)
+    smoothRadii[i] = smoothAt(i, smoothingMm, [&](long j) { return fineRadii[j]; });
+  std::vector<Point3> smooth(fine.size());
+  for (long i = 0; i < n; ++i)
+  {
+    const double sigma = smoothingMm > 0 ? std::max(smoothingMm, WideVesselSmoothingPerRadius * smoothRadii[i]) : 0.0;
+    smooth[i] = smoothAt(i, sigma, [&](long j) -> Point3 { return fine[j]; });
   }
   std::vector<Point3> points;
   std::vector<double> radii;

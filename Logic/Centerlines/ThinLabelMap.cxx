@@ -56,6 +56,81 @@ long BorderExtension(const LabelImage& mask, const IndexBox& found, unsigned axi
   return static_cast<long>(std::ceil(std::min(0.5 * extentMm, 40.0) / spacing[axis])) + 2;
 }
 
+/// One voxel of `box` per cut face the extensions carry: in the outermost repeated layer of each
+/// extension, for every 8-connected piece of that layer, the voxel farthest (in-plane) from the
+/// piece's rim. The thinning never removes these, so every vessel the border cuts keeps a curve
+/// through the extension to its own anchor. Without them a cut vessel whose stub is short can
+/// vanish: along a repeated layer the distance is constant, the voxels are taken in index order,
+/// and where the axis is two voxels wide (a tie) the stub peels from its closed end in one sweep
+/// (AVT D4 cut 10 mm below its bifurcation lost its right iliac that way).
+std::vector<long> CutFaceAnchors(const MaskGrid& box,
+                                 const std::array<long, 3>& before,
+                                 const std::array<long, 3>& after,
+                                 const std::array<double, 3>& spacingMm)
+{
+  std::vector<long> anchors;
+  for (unsigned a = 0; a < 3; ++a)
+    for (const bool low : { true, false })
+    {
+      if ((low ? before[a] : after[a]) == 0)
+        continue;
+      const long at = low ? 1 : box.size[a] - 2; // the box's shell is background
+      const unsigned u = (a + 1) % 3, w = (a + 2) % 3;
+      std::array<long, 3> layerSize = box.size;
+      layerSize[a] = 1;
+      MaskGrid layer(layerSize);
+      const auto boxFlat = [&](long iu, long iw)
+      {
+        std::array<long, 3> g{};
+        g[a] = at, g[u] = iu, g[w] = iw;
+        return box.Flat(g[0], g[1], g[2]);
+      };
+      const auto layerFlat = [&](long iu, long iw)
+      {
+        std::array<long, 3> g{};
+        g[u] = iu, g[w] = iw;
+        return layer.Flat(g[0], g[1], g[2]);
+      };
+      for (long iw = 0; iw < box.size[w]; ++iw)
+        for (long iu = 0; iu < box.size[u]; ++iu)
+          layer.voxels[layerFlat(iu, iw)] = box.voxels[boxFlat(iu, iw)];
+      std::array<double, 3> inPlane = spacingMm;
+      inPlane[a] = 1e6; // no rim across the layer
+      const DistanceField field = DistanceInsideMask(layer, inPlane);
+      std::vector<bool> seen(std::size_t(layer.Count()), false);
+      for (long iw = 0; iw < box.size[w]; ++iw)
+        for (long iu = 0; iu < box.size[u]; ++iu)
+        {
+          if (!layer.voxels[layerFlat(iu, iw)] || seen[std::size_t(layerFlat(iu, iw))])
+            continue;
+          std::vector<std::array<long, 2>> piece{ { iu, iw } }; // 8-connected in the layer
+          seen[std::size_t(layerFlat(iu, iw))] = true;
+          std::array<long, 2> best = piece[0];
+          for (std::size_t head = 0; head < piece.size(); ++head)
+          {
+            const auto [pu, pw] = piece[head];
+            if (field.distanceMm[layerFlat(pu, pw)] > field.distanceMm[layerFlat(best[0], best[1])])
+              best = piece[head];
+            for (long dw = -1; dw <= 1; ++dw)
+              for (long du = -1; du <= 1; ++du)
+              {
+                const long nu = pu + du, nw = pw + dw;
+                if (nu < 0 || nw < 0 || nu >= box.size[u] || nw >= box.size[w])
+                  continue;
+                const long n = layerFlat(nu, nw);
+                if (layer.voxels[n] && !seen[std::size_t(n)])
+                {
+                  seen[std::size_t(n)] = true;
+                  piece.push_back({ nu, nw });
+                }
+              }
+          }
+          anchors.push_back(boxFlat(best[0], best[1]));
+        }
+    }
+  return anchors;
+}
+
 } // namespace
 
 Skeleton ThinLabelMap(const LabelImage& mask, const ProgressCallback& progress)
@@ -104,13 +179,17 @@ Skeleton ThinLabelMap(const LabelImage& mask, const ProgressCallback& progress)
   std::stable_sort(order.begin(), order.end(),
                    [&](long a, long b) { return field.distanceMm[a] < field.distanceMm[b]; });
 
+  std::vector<std::uint8_t> anchored(std::size_t(box.Count()), 0);
+  for (const long v : CutFaceAnchors(box, before, after, spacingMm))
+    anchored[std::size_t(v)] = 1;
+
   ReportProgress(progress, 0.3, "Thinning");
   for (int sweep = 0;; ++sweep)
   {
     long removed = 0;
     for (const long v : order)
     {
-      if (!box.voxels[v])
+      if (!box.voxels[v] || anchored[std::size_t(v)])
         continue;
       const std::uint32_t n = Neighbourhood(box, v);
       if (CountNeighbours(n) != 1 && IsSimplePoint(n))

@@ -19,7 +19,9 @@
 /// layer is repeated outward by a little more than the radius it cuts, and the skeleton found
 /// there dropped: a vessel the scan cuts keeps its skeleton on its axis up to the border (its
 /// end voxel lies on the border layer) with its own radius, instead of a closed-off end that
-/// thins a radius short of the border, bent toward the rim of the cut. Output: skeleton voxels (image index and LPS mm)
+/// thins a radius short of the border, bent toward the rim of the cut. Each piece of a cut face
+/// anchors the skeleton at its in-plane centre in the extension's outermost layer (never removed),
+/// so that no cut vessel's curve can peel away, however short its stub inside the image. Output: skeleton voxels (image index and LPS mm)
 /// with the radius in mm — the distance to the nearest background voxel centre — and that background voxel's centre
 /// (AssignInscribedRadii uses it to measure radii off the voxel grid).
 ///

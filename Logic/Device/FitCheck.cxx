@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "Common/Errors.h"
 #include "Common/Format.h"
@@ -89,8 +90,16 @@ FitCheck CheckGraftFit(const StentMesh& mesh,
   c.proximalSealLengthMm = k == 0 ? 0.0 : trunkS[std::min(k, mesh.RingsIn(TrunkSegment) - 1)] - trunkS[0];
   double* iliacSeal[2] = { &c.rightIliacSealLengthMm, &c.leftIliacSealLengthMm };
   double* limbOversizing[2] = { &c.rightLimbOversizingPercent, &c.leftLimbOversizingPercent };
+  int summaries = 1; // the proximal one, then each sized limb's
   for (int side = 0; side < 2; ++side)
   {
+    c.limbChecked[side] = std::isfinite(graft[1 + side]);
+    if (!c.limbChecked[side])
+    {
+      *iliacSeal[side] = *limbOversizing[side] = std::numeric_limits<double>::quiet_NaN();
+      continue;
+    }
+    ++summaries;
     const int seg = 1 + side, last = mesh.RingsIn(seg) - 1;
     const auto& s = mesh.ringAbscissaMm[seg];
     int m = last;
@@ -112,7 +121,7 @@ FitCheck CheckGraftFit(const StentMesh& mesh,
   bool outerTop = false;
   c.proximalOversizingPercent = OversizingPercent(graft[TrunkSegment], vesselAt(TrunkSegment, 0, outerTop));
   outerSummaries += outerTop ? 1 : 0;
-  c.oversizingWall = outerSummaries == 3 ? "outer" : outerSummaries == 0 ? "lumen" : "mixed";
+  c.oversizingWall = outerSummaries == summaries ? "outer" : outerSummaries == 0 ? "lumen" : "mixed";
 
   // Ostia under the graft.
   const struct
@@ -129,8 +138,8 @@ FitCheck CheckGraftFit(const StentMesh& mesh,
   for (const auto& b : branches)
   {
     const Centerline* branch = tree.FindVessel(b.branch);
-    if (!branch || branch->Size() < 2)
-      continue;
+    if (!branch || branch->Size() < 2 || (b.segment != TrunkSegment && !c.limbChecked[b.segment - 1]))
+      continue; // an unsized leg is not the device's: where its limb would end is not known
     const BranchOstium ostium = FindBranchOstium(*b.parent, *branch);
     if (!ostium.found)
       continue;
@@ -150,7 +159,7 @@ FitCheck CheckGraftFit(const StentMesh& mesh,
     c.findings.push_back("proximal oversizing " + Percent(c.proximalOversizingPercent) + " outside " + range);
   const char* sides[2] = { "right", "left" };
   for (int side = 0; side < 2; ++side)
-    if (outside(*limbOversizing[side]))
+    if (c.limbChecked[side] && outside(*limbOversizing[side]))
       c.findings.push_back(std::string(sides[side]) + " limb oversizing " + Percent(*limbOversizing[side]) +
                            " outside " + range);
   if (c.proximalSealLengthMm < p.minimumProximalSealMm)
@@ -160,7 +169,7 @@ FitCheck CheckGraftFit(const StentMesh& mesh,
                          FormatNumber(p.minimumProximalSealMm, 0) + " mm: risk of migration and type Ia endoleak");
   }
   for (int side = 0; side < 2; ++side)
-    if (*iliacSeal[side] < p.minimumIliacSealMm)
+    if (c.limbChecked[side] && *iliacSeal[side] < p.minimumIliacSealMm)
       c.findings.push_back(std::string(sides[side]) + " iliac seal zone " + FormatNumber(*iliacSeal[side]) +
                            " mm, needs ≥ " + FormatNumber(p.minimumIliacSealMm, 0) + " mm: risk of type Ib endoleak");
   for (const OstiumCoverage& o : c.ostia)

@@ -23,6 +23,10 @@
 /// Ostia: each labelled side branch (rightRenal, leftRenal, superiorMesenteric, coeliac on the
 /// aorta; rightInternalIliac, leftInternalIliac on the iliacs) whose ostium (FindBranchOstium)
 /// overlaps the graft's extent on its parent by more than `ostiumOverlapToleranceMm` is covered.
+/// Limbs not sized (a partial plan: the scan ends above the iliac landing zones): a NaN limb
+/// diameter; that leg was simulated only to carry the connection element, so its seal length and
+/// limb oversizing are NaN, its internal iliac ostium is not checked, and it has no findings
+/// (limbChecked says which sides were checked; Complete() whether both were).
 /// Findings (one line each; none = the fit check passed): oversizing outside
 /// [oversizingMinPercent, oversizingMaxPercent] at the proximal site or a limb's landing zone; a
 /// seal zone shorter than its minimum (proximal: migration and type Ia endoleak risk; iliac:
@@ -73,15 +77,19 @@ struct FitCheck
   double rightLimbOversizingPercent = 0.0; ///< over the leg's distal 15 mm (median)
   double leftLimbOversizingPercent = 0.0;
   std::vector<OstiumCoverage> ostia;
-  bool migrationRisk = false;           ///< proximal seal shorter than its minimum
-  std::string oversizingWall = "lumen"; ///< the wall the three summary oversizings are over
-  std::vector<std::string> findings;    ///< the problems, one line each
-  bool Passed() const { return findings.empty(); }
+  bool migrationRisk = false;                    ///< proximal seal shorter than its minimum
+  std::string oversizingWall = "lumen";          ///< the wall the three summary oversizings are over
+  std::vector<std::string> findings;             ///< the problems, one line each
+  std::array<bool, 2> limbChecked{ true, true }; ///< right, left: the limb was sized and checked
+  bool Complete() const { return limbChecked[0] && limbChecked[1]; }
+  /// No finding on a complete check (a partial one cannot pass: its limbs are not known).
+  bool Passed() const { return findings.empty() && Complete(); }
   /// The covered ostia's branch names joined by ", ", or "none".
   std::string CoveredOstia() const;
 };
 
-/// See the file comment. `graftDiametersMm`: trunk, right leg, left leg (StentSegment order).
+/// See the file comment. `graftDiametersMm`: trunk, right leg, left leg (StentSegment order);
+/// NaN for a limb not sized.
 FitCheck CheckGraftFit(const StentMesh& mesh,
                        const Points& V,
                        const Eigen::VectorXd& wallDistanceMm,

@@ -141,10 +141,11 @@ nlohmann::json FitCheckToJson(const FitCheck& check)
       covered.push_back(o.branch);
   }
   return { { "passed", check.Passed() },
+           { "limbsChecked", { { "right", check.limbChecked[0] }, { "left", check.limbChecked[1] } } },
            { "migrationRisk", check.migrationRisk },
            { "proximalSealLengthMm", check.proximalSealLengthMm },
-           { "rightIliacSealLengthMm", check.rightIliacSealLengthMm },
-           { "leftIliacSealLengthMm", check.leftIliacSealLengthMm },
+           { "rightIliacSealLengthMm", JsonNumber(check.rightIliacSealLengthMm) },
+           { "leftIliacSealLengthMm", JsonNumber(check.leftIliacSealLengthMm) },
            { "proximalOversizingPercent", JsonNumber(check.proximalOversizingPercent) },
            { "rightLimbOversizingPercent", JsonNumber(check.rightLimbOversizingPercent) },
            { "leftLimbOversizingPercent", JsonNumber(check.leftLimbOversizingPercent) },

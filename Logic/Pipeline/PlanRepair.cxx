@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <future>
 #include <utility>
 
@@ -10,6 +11,7 @@
 #include "Centerlines/ThinLabelMap.h"
 #include "Common/Errors.h"
 #include "Common/Format.h"
+#include "Common/Median.h"
 #include "Stent/WallDistanceField.h"
 
 namespace sgp
@@ -171,7 +173,9 @@ void AddDeviceRows(const DeviceCatalog& catalog, RepairPlan& plan)
     catalog.families[std::size_t(family.catalogIndex)].diameterReference == DiameterReference::OuterWall;
   const std::string wall = outer ? "outer" : "lumen";
   const std::string over = outer ? " % over the outer-wall " : " % over the lumen's ";
-  const std::string name = family.family + (plan.selection.recommended == plan.simulatedFamily ? "" : " (outside IFU)");
+  const std::string name = family.family + (!plan.fitCheck.Complete() ? " (main body only: partial plan)"
+                                            : plan.selection.recommended == plan.simulatedFamily ? ""
+                                                                                                 : " (outside IFU)");
   const StentMesh& mesh = plan.mesh;
   plan.rows.push_back({ "mainBodyDiameter", family.mainBody.diameterMm, "mm",
                         name + " main body, " + FormatNumber(family.mainBody.oversizingPercent) + over + "(a)", "aorta",
@@ -188,6 +192,65 @@ void AddDeviceRows(const DeviceCatalog& catalog, RepairPlan& plan)
     plan.rows.push_back(m);
 }
 
+/// A partial plan whose limbs cannot be sized: the proximal part of the fit check (proximal seal,
+/// proximal oversizing, covered aortic ostia) with the main body of the family FamilyForMainBody
+/// picks. Each leg takes the limb the selection chose for it where that side was sized, else the
+/// lumen's own diameter there (the median of its measured rings: it neither presses on the wall
+/// nor hangs free, and carries only the connection element): nothing distal is read off it.
+void SimulateTheMainBodyOnly(const WallDistanceField& wall,
+                             const PlanParams& params,
+                             const StageReporter& report,
+                             RepairPlan& plan)
+{
+  const int chosen = FamilyForMainBody(plan.selection);
+  if (chosen < 0)
+  {
+    report.Warn("The plan is partial: the scan ends above the iliac landing zones, so the limbs cannot be sized, "
+                "and no catalogue main body fits the neck (" +
+                plan.selection.summary +
+                "); no graft is simulated, so its sizes, seal lengths, oversizing and fit "
+                "check are not available.");
+    return;
+  }
+  report.Begin("SimulateGraft", "Simulating the chosen main body in the aorta (partial plan)");
+  const FamilyEvaluation& family = plan.selection.families[std::size_t(chosen)];
+  const SizeChoice* limbs[2] = { &family.rightLimb, &family.leftLimb };
+  plan.graftDiametersMm = { family.mainBody.diameterMm, std::numeric_limits<double>::quiet_NaN(),
+                            std::numeric_limits<double>::quiet_NaN() };
+  ActiveContourParams graftParams = params.graft;
+  graftParams.balloonRadiusMm[TrunkSegment] = family.mainBody.diameterMm / 2.0;
+  for (int side = 0; side < 2; ++side)
+  {
+    const int seg = 1 + side;
+    if (limbs[side]->Chosen())
+    {
+      plan.graftDiametersMm[std::size_t(seg)] = limbs[side]->diameterMm;
+      graftParams.balloonRadiusMm[std::size_t(seg)] = limbs[side]->diameterMm / 2.0;
+      continue;
+    }
+    std::vector<double> means;
+    for (const RingDiameters& r : plan.measurements.profiles[std::size_t(seg)].rings)
+      if (std::isfinite(r.meanMm))
+        means.push_back(r.meanMm);
+    graftParams.balloonRadiusMm[std::size_t(seg)] =
+      means.empty() ? params.graft.balloonRadiusMm[std::size_t(seg)] : Median(means) / 2.0;
+  }
+  plan.graft = FitActiveContour(plan.mesh, wall, graftParams, report.Callback());
+  plan.fitCheck = CheckGraftFit(plan.mesh, plan.graft.V, plan.graft.wallDistanceMm, plan.measurements, plan.centerlines,
+                                plan.graftDiametersMm, FitCheckParams{}, &plan.vesselWall);
+  plan.simulatedFamily = chosen;
+  std::string findings;
+  for (const std::string& f : plan.fitCheck.findings)
+    findings += "; " + f;
+  report.Warn("Partial plan: the proximal part of the fit check is made with the " + family.family + " main body (" +
+              FormatNumber(family.mainBody.diameterMm) + " mm, " + FormatNumber(family.mainBody.oversizingPercent) +
+              " % over (a)): proximal seal " + FormatNumber(plan.fitCheck.proximalSealLengthMm) +
+              " mm, covered aortic ostia: " + plan.fitCheck.CoveredOstia() + findings +
+              ". The limbs the scan does not size, their seal zones and the internal iliac ostia are not checked, "
+              "so fitCheckPassed and withinIfu are false.");
+  AddDeviceRows(params.catalog, plan);
+}
+
 void ChooseAndSimulateDevice(const WallDistanceField& wall,
                              const PlanRequest& request,
                              const PlanParams& params,
@@ -202,12 +265,11 @@ void ChooseAndSimulateDevice(const WallDistanceField& wall,
                            std::isnan(plan.measurements.Value("leftIliacLumenDiameter"));
   if (plan.simulatedFamily < 0 && plan.centerlines.Partial() && limbUnsized)
   {
-    const std::string why = "The plan is partial: the scan ends above the iliac landing zones, so the limbs cannot "
-                            "be sized and no graft is simulated";
     if (request.requireSimulatedGraft)
-      throw AlgorithmError(why + " for outputSimulatedStentModel; give a scan that covers the common iliac "
-                                 "arteries to their bifurcations.");
-    report.Warn(why + "; its sizes, seal lengths, oversizing and fit check are not available.");
+      throw AlgorithmError("The plan is partial: the scan ends above the iliac landing zones, so the limbs cannot be "
+                           "sized and no graft is simulated for outputSimulatedStentModel; give a scan that covers "
+                           "the common iliac arteries to their bifurcations.");
+    SimulateTheMainBodyOnly(wall, params, report, plan);
     return;
   }
   if (plan.simulatedFamily < 0)
@@ -251,6 +313,19 @@ NeckAnatomy NeckFromMeasurements(const Measurements& m)
   neck.reverseTaper15mmMm = m.reverseTaperMm[1];
   neck.neckLengthUncertaintyMm = NeckLengthUncertaintyMm;
   return neck;
+}
+
+int FamilyForMainBody(const DeviceSelection& selection)
+{
+  if (selection.recommended >= 0 && selection.families[std::size_t(selection.recommended)].mainBody.Chosen())
+    return selection.recommended;
+  int best = -1;
+  for (int i = 0; i < static_cast<int>(selection.families.size()); ++i)
+    if (selection.families[std::size_t(i)].mainBody.Chosen() &&
+        (best < 0 || selection.families[std::size_t(i)].Count(CheckStatus::Fail) <
+                       selection.families[std::size_t(best)].Count(CheckStatus::Fail)))
+      best = i;
+  return best;
 }
 
 int FamilyToSimulate(const DeviceSelection& selection)

@@ -172,4 +172,9 @@ NeckAnatomy NeckFromMeasurements(const Measurements& measurements);
 /// sits); −1 when no family has all three sizes.
 int FamilyToSimulate(const DeviceSelection& selection);
 
+/// The family whose main body a partial plan simulates (its limbs cannot be sized): the
+/// recommended one if it has a main body, else the one with a main body chosen and the fewest
+/// failing checks; −1 when no family has a main body for the neck.
+int FamilyForMainBody(const DeviceSelection& selection);
+
 } // namespace sgp

@@ -111,7 +111,8 @@ std::vector<PlanValue> PlanReturnValues(const RepairPlan& plan)
   const DeviceSelection& selection = plan.selection;
   put(Text("recommendedDevice", selection.recommended >= 0 ? selection.families[selection.recommended].family : "none",
            selected));
-  put(Boolean("withinIfu", selection.recommended >= 0 && selection.recommendedWithinIfu, selected));
+  // Every criterion passed, none left indeterminate (a partial plan's limbs, a wall not seen).
+  put(Boolean("withinIfu", selection.recommended >= 0 && selection.recommendedFullyChecked, selected));
   const bool simulated = plan.HasGraft();
   put(Text("coveredOstia", plan.fitCheck.CoveredOstia(), simulated));
   put(Boolean("migrationRisk", plan.fitCheck.migrationRisk, simulated));

@@ -229,7 +229,13 @@ StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& p)
   for (int j = 3 * quarter + 1; j < n + quarter; ++j) // trunk left half → left leg lateral half
     mesh.chains.push_back(join(column(0, j % n, true), column(2, ((half - j) % n + n) % n, true)));
   for (int j : { quarter, 3 * quarter }) // left leg's anterior and posterior columns
-    mesh.chains.push_back(join(column(0, j, true), column(2, j, true)));
+  {
+    // From the trunk's last two rings only: the trunk's column j is already on the right leg's
+    // chain, and a trunk edge on two chains would carry its s-stiffness twice (a dent along the
+    // whole trunk at these two columns).
+    const std::vector<int> trunk = column(0, j, true);
+    mesh.chains.push_back(join({ trunk.end() - 2, trunk.end() }, column(2, j, true)));
+  }
   for (int j = 3 * quarter + 1; j < n + quarter; ++j) // crotch: right leg up, left leg down
     mesh.chains.push_back(join(column(1, j % n, false), column(2, j % n, true)));
 

@@ -1,6 +1,10 @@
 #include "Stent/StiffnessMatrix.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "Common/CheckRange.h"
@@ -41,16 +45,27 @@ DifferenceOperators BuildDifferenceOperators(const StentMesh& mesh)
     for (std::size_t j = 0; j < ring.size(); ++j)
       next[ring[j]] = ring[(j + 1) % ring.size()];
   RowBuilder ds, dt, dss, dtt, dst;
+  // Each s-edge and s-triple once, however many chains run through it (chains share their first
+  // rings at the junction); read backwards a stencil is the same row up to its sign.
+  std::set<std::pair<int, int>> edges;
+  std::set<std::array<int, 3>> triples;
   for (const auto& chain : mesh.chains)
   {
     for (std::size_t i = 0; i + 1 < chain.size(); ++i)
     {
       const int a = chain[i], b = chain[i + 1];
+      if (!edges.insert(std::minmax(a, b)).second)
+        continue;
       ds.Add({ { b, 1.0 }, { a, -1.0 } });
       dst.Add({ { next[b], 1.0 }, { b, -1.0 }, { next[a], -1.0 }, { a, 1.0 } });
     }
     for (std::size_t i = 0; i + 2 < chain.size(); ++i)
-      dss.Add({ { chain[i], 1.0 }, { chain[i + 1], -2.0 }, { chain[i + 2], 1.0 } });
+    {
+      const int a = chain[i], c = chain[i + 2];
+      if (!triples.insert({ std::min(a, c), chain[i + 1], std::max(a, c) }).second)
+        continue;
+      dss.Add({ { a, 1.0 }, { chain[i + 1], -2.0 }, { c, 1.0 } });
+    }
   }
   for (const auto& ring : mesh.rings)
   {

@@ -11,7 +11,9 @@
 ///   D_st = ∂²/∂s∂t: per consecutive chain pair (a, b): (e_{b⁺} − e_b) − (e_{a⁺} − e_a), x⁺
 ///                   the next vertex around x's ring                                    (w5)
 /// Differences are in grid steps (as in the paper); the weights absorb the spacing. The s-chains
-/// cross the connection element (StentMesh.h), so the stencils reach across the junction.
+/// cross the connection element (StentMesh.h), so the stencils reach across the junction. A pair
+/// or triple on more than one chain (the junction's shared trunk rings) gives one row, not one
+/// per chain: the surface is equally stiff all round every ring.
 ///
 /// Guarantees: K is symmetric positive semi-definite (a sum of Gram matrices with non-negative
 /// weights); every stencil's coefficients sum to zero, so K·1 = 0 and translations cost nothing;

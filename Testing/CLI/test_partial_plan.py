@@ -7,8 +7,12 @@ The default anatomy (1 x 1 x 1.5 mm) with the slices more than 20 mm below the t
 bifurcation taken away:
 - the whole plan runs (exit 0): the aortic values are measured and within 1.5 mm of the truth (the
   lumen bar on slices over 1.25 mm), the values that need more of the iliacs are -1 in the return
-  parameter file, stderr has the "WARNING: Partial plan" line naming the coverage and the one
-  saying no graft is simulated, stdout says the plan is partial;
+  parameter file, stderr has the "WARNING: Partial plan" line naming the coverage, stdout says the
+  plan is partial;
+- the proximal part of the fit check is made with the whole scan's main body: the same
+  mainBodyDiameter and covered ostia, proximalOversizing within 1 % and proximalSealLength within
+  one ring spacing of the whole scan's; the limbs' sizes, seal lengths and oversizing are -1,
+  fitCheckPassed and withinIfu are false, and a WARNING says so;
 - asking for the simulated graft as well is one ERROR line and nothing written.
 Cut 5 mm below the bifurcation: one ERROR line naming the scan's extent, nothing written.
 Prints one line per check and `N passed, M failed`; exits 1 on any failure.
@@ -37,7 +41,11 @@ def main():
     volume = os.path.join(workdir, "phantom.nrrd")
     truth_path = os.path.join(workdir, "truth.json")
     params = os.path.join(workdir, "phantom.params")
-    result = run([args.phantom, "--returnparameterfile", params, "--spacingMm", "1,1,1.5",
+    # A wall in fat (the devices are sized on the outer wall, which needs fat around it to be seen)
+    # and 14 mm iliacs (outer; their 11 mm lumens take the catalogue's limbs), so that the whole
+    # scan's plan simulates a graft to compare the partial plan's proximal fit check with.
+    result = run([args.phantom, "--returnparameterfile", params, "--spacingMm", "1,1,1.5", "--wallThicknessMm", "1.5",
+                  "--tissueHu", "-100", "--rightIliacDiameterMm", "14", "--leftIliacDiameterMm", "14",
                   "--outputTruth", truth_path, volume], workdir)
     if not check(result.returncode == 0, "the phantom is generated", result.stderr[:400]):
         return 1
@@ -63,14 +71,38 @@ def main():
               f"{sizing[truth_name]}")
     for name in ("rightIliacLumenDiameter", "leftIliacLumenDiameter", "rightIliacLength", "leftIliacLength",
                  "rightAccessMinDiameter", "leftAccessMinDiameter", "proximalSiteToBifurcationLength",
-                 "mainBodyDiameter"):
+                 "rightLimbDiameter", "leftLimbDiameter", "rightIliacSealLength", "leftIliacSealLength",
+                 "rightLimbOversizing", "leftLimbOversizing"):
         check(values.get(name) == "-1", f"cut 20 mm below: {name} is -1 (not measured)", values.get(name))
     warnings = [line for line in result.stderr.splitlines() if line.startswith("WARNING: ")]
     check(any(w.startswith("WARNING: Partial plan: the scan ends ") and "below the aortic bifurcation along the right"
               in w for w in warnings), "cut 20 mm below: a WARNING names the right iliac's coverage",
           str(warnings)[:600])
-    check(any("The plan is partial" in w and "no graft is simulated" in w for w in warnings),
-          "cut 20 mm below: a WARNING says no graft is simulated", str(warnings)[:600])
+
+    # The proximal part of the fit check against the whole scan's.
+    wholedir = fresh_dir(os.path.join(workdir, "case-whole"))
+    whole_run = run_cli(args.cli, wholedir, volume, ["--seed", seed])
+    whole = {}
+    if check(whole_run.returncode == 0, "the whole scan's plan runs", whole_run.stderr.strip()[-400:]):
+        whole = sem_rules.read_return_parameters(os.path.join(wholedir, "ret.params"))
+    for name in ("mainBodyDiameter", "coveredOstia"):
+        check(values.get(name) == whole.get(name) and values.get(name) not in (None, "-1"),
+              f"cut 20 mm below: {name} {values.get(name)} is the whole scan's", whole.get(name))
+    # (a) of the two plans within 0.1 mm of each other: 0.5 % of the oversizing; 1 % with margin.
+    check(abs(float(values.get("proximalOversizing", "nan")) - float(whole.get("proximalOversizing", "nan"))) <= 1.0,
+          f"cut 20 mm below: proximalOversizing {values.get('proximalOversizing')} within 1 % of the whole "
+          f"scan's {whole.get('proximalOversizing')}")
+    # The seal zone is quantized by the rings (4 mm apart by default).
+    check(abs(float(values.get("proximalSealLength", "nan")) - float(whole.get("proximalSealLength", "nan"))) <= 4.0,
+          f"cut 20 mm below: proximalSealLength {values.get('proximalSealLength')} within a ring spacing of the "
+          f"whole scan's {whole.get('proximalSealLength')}")
+    check(values.get("fitCheckPassed") == "false" and values.get("withinIfu") == "false",
+          "cut 20 mm below: fitCheckPassed and withinIfu false (the limbs are not known)",
+          f"{values.get('fitCheckPassed')} / {values.get('withinIfu')}")
+    check(any(w.startswith("WARNING: Partial plan: the proximal part of the fit check is made with the ")
+              and "not checked" in w for w in warnings),
+          "cut 20 mm below: a WARNING gives the proximal fit check and says what is not checked",
+          str(warnings)[:900])
     check("Partial plan: the scan ends below the bifurcation after" in result.stdout,
           "cut 20 mm below: the summary on stdout says the plan is partial", result.stdout[-600:])
 

@@ -2,6 +2,9 @@
 // the pipeline the CLI runs: segmentation → centerlines → measure-mode fit → measurements →
 // selection → simulate-mode fit with the device's nominal radii → fit check.
 #include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -219,6 +222,47 @@ TEST_F(DefaultPhantomGraft, GraftAboveTheLowestRenal_CoversItsOstium)
       rightRenalCovered = o.covered;
   EXPECT_TRUE(rightRenalCovered) << above.CoveredOstia();
   EXPECT_FALSE(above.Passed());
+}
+
+TEST_F(DefaultPhantomGraft, LimbsNotSized_TheProximalPartChecked)
+{
+  // A partial plan: the limbs are not sized (NaN), the legs simulated at the iliac lumen's own
+  // 12 mm only to carry the connection element. The proximal part is the whole check's: the same
+  // top ring, oversizing over the same (a) (exactly: one division of the same doubles), the seal
+  // zone within one ring (3.9 mm: the legs' radii change the trunk's fit near the junction only)
+  // and the same aortic ostia; nothing distal is reported or found.
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  const FitCheck whole = Simulate(*plan, { 25.0, 14.0, 14.0 });
+  for (const double mainBody : { 25.0, 18.0 })
+  {
+    SCOPED_TRACE(mainBody);
+    const ActiveContourResult graft =
+      FitActiveContour(plan->mesh, plan->wall, ActiveContourParams::Simulate({ mainBody, 12.0, 12.0 }));
+    const FitCheck c = CheckGraftFit(plan->mesh, graft.V, graft.wallDistanceMm, plan->measurements, plan->tree,
+                                     { mainBody, none, none }, FitCheckParams{}, &plan->vesselWall);
+    const FitCheck full = mainBody == 25.0 ? whole : Simulate(*plan, { mainBody, 14.0, 14.0 });
+    EXPECT_FALSE(c.Complete());
+    EXPECT_FALSE(c.Passed()); // a partial check cannot pass
+    EXPECT_NEAR(c.proximalOversizingPercent, full.proximalOversizingPercent, 1e-9);
+    EXPECT_NEAR(c.proximalSealLengthMm, full.proximalSealLengthMm, 3.9);
+    EXPECT_EQ(c.migrationRisk, full.migrationRisk);
+    for (const double distal : { c.rightIliacSealLengthMm, c.leftIliacSealLengthMm, c.rightLimbOversizingPercent,
+                                 c.leftLimbOversizingPercent })
+      EXPECT_TRUE(std::isnan(distal)) << distal;
+    std::vector<std::string> aortic, checked;
+    for (const OstiumCoverage& o : full.ostia)
+      if (o.parent == "aorta")
+        aortic.push_back(o.branch + (o.covered ? " covered" : ""));
+    for (const OstiumCoverage& o : c.ostia)
+      checked.push_back(o.branch + (o.covered ? " covered" : ""));
+    EXPECT_EQ(checked, aortic); // the internal iliacs are not checked
+    for (const std::string& f : c.findings)
+      EXPECT_EQ(f.find("limb"), std::string::npos) << f;
+    for (const std::string& f : c.findings)
+      EXPECT_EQ(f.find("iliac seal"), std::string::npos) << f;
+    // The 18 mm main body's proximal findings are found without the limbs (migration risk).
+    EXPECT_EQ(c.findings.empty(), mainBody == 25.0) << (c.findings.empty() ? "" : c.findings.front());
+  }
 }
 
 TEST_F(DefaultPhantomGraft, MismatchedMeasurements_InputError)

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "Common/Errors.h"
+#include "Common/Format.h"
 #include "Measurement/MeasureAnatomy.h"
 #include "PhantomTestSupport.h"
 #include "PipelineSupport.h"
@@ -186,6 +187,18 @@ TEST_F(NoisyPhantomMeasurements, NoRenalsNoPoint_TopOfTheAortaWithWarning)
   EXPECT_EQ(site.abscissaMm, 0.0);
   EXPECT_NE(site.warning.find("top of the aortic centerline"), std::string::npos) << site.warning;
   EXPECT_NE(site.warning.find("lowestRenalOstium"), std::string::npos) << site.warning;
+  // With the scan's extent and where the aorta's top lies in it: inside (this phantom's aorta ends
+  // 36 mm below the scan's top), or — a scan that begins at the aorta's top — on its border.
+  EXPECT_NE(site.warning.find("The scan spans z " + FormatNumber(tree.scanLowestZMm, 1) + " to " +
+                              FormatNumber(tree.scanHighestZMm, 1) + " mm"),
+            std::string::npos)
+    << site.warning;
+  const std::string top = FormatNumber(tree.aorta.points(0, 2), 1);
+  EXPECT_NE(site.warning.find("the aorta ends inside it at z " + top + " mm"), std::string::npos) << site.warning;
+  tree.scanHighestZMm = tree.aorta.points(0, 2) + 1.0;
+  const std::string cut = FindProximalSite(tree).warning;
+  EXPECT_NE(cut.find("the aorta runs out of its superior border at z " + top + " mm"), std::string::npos) << cut;
+  EXPECT_NE(cut.find("a scan that begins below the renal arteries shows none"), std::string::npos) << cut;
 }
 
 TEST_F(NoisyPhantomMeasurements, FoldedLandingZoneRings_InscribedDiameterAndWarning)

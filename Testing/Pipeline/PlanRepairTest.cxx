@@ -236,8 +236,9 @@ TEST(PlanRepair, NoGraftToSimulate_ValuesUnmeasuredOrAnErrorWhenTheGraftWasAsked
 
 // A scan that ends 10–40 mm below the aortic bifurcation (issue 13, item 2): a partial plan. The
 // aortic part is made and within the bar of the truth; what needs more of the iliacs is not
-// measured (−1 in the return values) with a warning; the limb checks are indeterminate, no graft
-// is simulated (nothing to size its legs on), and asking for the simulated graft is an error.
+// measured (−1 in the return values) with a warning; the limb checks are indeterminate, the main
+// body alone is simulated for the proximal part of the fit check (nothing to size the limbs on),
+// and asking for the simulated graft is an error.
 // Cut 10 mm below, this phantom gives the coverage error instead (9.0 and 9.4 mm measured): B
 // located on 4–9 mm of iliac axis sits 1.6 mm below the truth's — a gap of issue 13 (the AVT cases
 // cut 10 mm below pass: AvtPartialPlanTest).
@@ -268,20 +269,32 @@ TEST_P(PartialPlanOnACutScan, AorticPartMadeIliacValuesUnmeasured)
   EXPECT_NEAR(m.Value("distalNeckMinLumenDiameter"), truth.distalNeckMinDiameter, diameterMm);
   EXPECT_NEAR(m.Value("proximalNeckLength"), truth.proximalNeckLength, NeckLengthUncertaintyMm);
   EXPECT_TRUE(testing::AnyWarningContains(plan.warnings, "Partial plan: the scan ends "));
-  EXPECT_TRUE(
-    testing::AnyWarningContains(plan.warnings, "The plan is partial: the scan ends above the iliac landing zones"));
-  EXPECT_FALSE(plan.HasGraft());
+  EXPECT_TRUE(testing::AnyWarningContains(plan.warnings, "the proximal part of the fit check is made with the"));
+  // The proximal part of the fit check, on the main body alone: this phantom's 25 mm neck (outer)
+  // takes a main body, whose top seals in it; the limbs are not known.
+  ASSERT_TRUE(plan.HasGraft());
+  EXPECT_FALSE(plan.fitCheck.Complete());
+  EXPECT_FALSE(plan.fitCheck.Passed());
+  EXPECT_TRUE(std::isnan(plan.graftDiametersMm[RightLegSegment]) && std::isnan(plan.graftDiametersMm[LeftLegSegment]));
+  EXPECT_GE(plan.fitCheck.proximalSealLengthMm, 10.0);
+  for (const OstiumCoverage& o : plan.fitCheck.ostia)
+    EXPECT_EQ(o.parent, "aorta") << o.branch;
   for (const PlanValue& v : PlanReturnValues(plan))
     if (v.name.find("Iliac") != std::string::npos || v.name.find("Access") != std::string::npos ||
-        v.name.find("Limb") != std::string::npos || v.name == "proximalSealLength")
+        v.name.find("Limb") != std::string::npos)
     {
       SCOPED_TRACE(v.name);
       EXPECT_FALSE(v.measured) << v.text;
     }
     else if (v.name == "proximalNeckLumenDiameter" || v.name == "proximalNeckDiameter" ||
-             v.name == "distalNeckMinLumenDiameter" || v.name == "proximalNeckLength")
+             v.name == "distalNeckMinLumenDiameter" || v.name == "proximalNeckLength" || v.name == "mainBodyDiameter" ||
+             v.name == "proximalSealLength" || v.name == "proximalOversizing")
     {
       EXPECT_TRUE(v.measured) << v.name;
+    }
+    else if (v.name == "fitCheckPassed" || v.name == "withinIfu")
+    {
+      EXPECT_EQ(v.text, "false") << v.name;
     }
   // Every family's limb checks are indeterminate (nothing to size a limb on); none passes.
   for (const FamilyEvaluation& family : plan.selection.families)
