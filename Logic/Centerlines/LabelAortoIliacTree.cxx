@@ -523,6 +523,32 @@ void ValidateCenterlineParams(const CenterlineParams& params)
   CheckRange("internalIliacRadiusRatio", params.internalIliacRadiusRatio, 0, 1, "");
   CheckRange("minimumAortaToIliacRatio", params.minimumAortaToIliacRatio, 0, 10, "");
   CheckRange("visceralRadiusMm", params.visceralRadiusMm, 0, 20, "mm");
+  CheckRange("maximumJunctionsInTangle", params.maximumJunctionsInTangle, 1, 100000, "");
+}
+
+TangleMeasure MeasureTangle(const SkeletonGraph& graph, double radiusMm)
+{
+  TangleMeasure t;
+  std::vector<int> junctions;
+  for (int n = 0; n < int(graph.nodes.size()); ++n)
+    if (graph.Degree(n) >= 3)
+      junctions.push_back(n);
+  t.junctions = int(junctions.size());
+  for (const SkeletonGraph::Edge& e : graph.edges)
+    t.lengthMm += e.lengthMm;
+  t.loops = int(graph.edges.size()) - int(graph.nodes.size()) + graph.CountComponents();
+  for (const int a : junctions)
+  {
+    int near = 0;
+    for (const int b : junctions)
+      near += (graph.nodes[a].position - graph.nodes[b].position).norm() <= radiusMm;
+    if (near > t.densestJunctions)
+    {
+      t.densestJunctions = near;
+      t.densestAt = graph.nodes[a].position;
+    }
+  }
+  return t;
 }
 
 CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineParams& params)
@@ -541,6 +567,17 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
   {
     throw AlgorithmError("The lumen skeleton breaks into " + std::to_string(pieces) + " pieces (" + found +
                          "); expected one connected aorto-iliac tree; check the segmentation for gaps.");
+  }
+  const TangleMeasure tangle = MeasureTangle(graph, TangleRadiusMm);
+  if (tangle.densestJunctions > params.maximumJunctionsInTangle)
+  {
+    throw AlgorithmError("The lumen skeleton is a tangle: " + std::to_string(tangle.densestJunctions) +
+                         " junctions within " + FormatNumber(TangleRadiusMm, 0) + " mm of " +
+                         FormatPoint(tangle.densestAt) + " mm LPS (" + std::to_string(tangle.loops) + " loops in " +
+                         FormatNumber(tangle.lengthMm, 0) + " mm of skeleton; " + found +
+                         "), where an aorto-iliac tree has at most " + std::to_string(params.maximumJunctionsInTangle) +
+                         "; the lumen has leaked into a structure that is no vessel (bowel, bone marrow, a venous "
+                         "plexus): check that the seed lies in the aorta and narrow the window (lowerHu, upperHu).");
   }
   std::vector<RefusedY> refused;
   const std::vector<Bifurcation> candidates = FindBifurcations(graph, params, refused);

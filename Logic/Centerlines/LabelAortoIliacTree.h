@@ -54,8 +54,10 @@
 /// Errors (AlgorithmError, never a made-up Y): no junction qualifies as the bifurcation (the
 /// message gives the numbers of end points and junctions and the longest path, mm, the scan's
 /// extent and the vessels its inferior border cuts); a partial Y with too little iliac; two
-/// candidates (the message gives both positions); a skeleton in several pieces. InputError for
-/// parameters out of range.
+/// candidates (the message gives both positions); a skeleton in several pieces; a tangle — more
+/// than `maximumJunctionsInTangle` junctions within TangleRadiusMm of one (MeasureTangle), the
+/// lumen spread into bowel, marrow or a plexus (checked first, before any Y is looked for).
+/// InputError for parameters out of range.
 #pragma once
 
 #include "Centerlines/Centerlines.h"
@@ -77,7 +79,26 @@ struct CenterlineParams
   double internalIliacRadiusRatio = 0.35; ///< internal iliac radius / common iliac radius
   double minimumAortaToIliacRatio = 1.0;  ///< aorta's median radius / each iliac's, whole vessels
   double visceralRadiusMm = 2.5;          ///< an anterior branch this wide below a Y is visceral, mm
+  /// Most junctions within TangleRadiusMm of one junction before the skeleton is a tangle (a
+  /// leak): twice the most a real lumen showed (AVT D3's irregular sac: 50 of its 60; D1, D2,
+  /// D4: 6–9); in [1, 100000].
+  int maximumJunctionsInTangle = 100;
 };
+
+/// The radius of the neighbourhood the tangle rule counts junctions in, mm.
+constexpr double TangleRadiusMm = 25.0;
+
+/// How tangled a lumen's skeleton is (leak evidence): its junctions (nodes of degree ≥ 3), its
+/// independent loops (edges − nodes + components), its total length (mm), and the most junctions
+/// within `radiusMm` of one junction (itself included) and where that junction lies (LPS mm).
+struct TangleMeasure
+{
+  int junctions = 0, loops = 0, densestJunctions = 0;
+  double lengthMm = 0.0;
+  Point3 densestAt = Point3::Zero();
+};
+
+TangleMeasure MeasureTangle(const SkeletonGraph& graph, double radiusMm);
 
 void ValidateCenterlineParams(const CenterlineParams& params);
 
