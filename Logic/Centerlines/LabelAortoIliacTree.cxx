@@ -533,7 +533,6 @@ TangleMeasure MeasureTangle(const SkeletonGraph& graph, double radiusMm)
   for (int n = 0; n < int(graph.nodes.size()); ++n)
     if (graph.Degree(n) >= 3)
       junctions.push_back(n);
-  t.junctions = int(junctions.size());
   for (const SkeletonGraph::Edge& e : graph.edges)
     t.lengthMm += e.lengthMm;
   t.loops = int(graph.edges.size()) - int(graph.nodes.size()) + graph.CountComponents();

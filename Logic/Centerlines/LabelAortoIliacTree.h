@@ -88,12 +88,12 @@ struct CenterlineParams
 /// The radius of the neighbourhood the tangle rule counts junctions in, mm.
 constexpr double TangleRadiusMm = 25.0;
 
-/// How tangled a lumen's skeleton is (leak evidence): its junctions (nodes of degree ≥ 3), its
-/// independent loops (edges − nodes + components), its total length (mm), and the most junctions
-/// within `radiusMm` of one junction (itself included) and where that junction lies (LPS mm).
+/// How tangled a lumen's skeleton is (leak evidence): its independent loops (edges − nodes +
+/// components), its total length (mm), and the most junctions (nodes of degree ≥ 3) within
+/// `radiusMm` of one junction (itself included) and where that junction lies (LPS mm).
 struct TangleMeasure
 {
-  int junctions = 0, loops = 0, densestJunctions = 0;
+  int loops = 0, densestJunctions = 0;
   double lengthMm = 0.0;
   Point3 densestAt = Point3::Zero();
 };

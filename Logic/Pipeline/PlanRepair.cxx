@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <limits>
 #include <future>
+#include <limits>
 #include <utility>
 
 #include "Centerlines/AssignInscribedRadii.h"
@@ -315,31 +315,36 @@ NeckAnatomy NeckFromMeasurements(const Measurements& m)
   return neck;
 }
 
-int FamilyForMainBody(const DeviceSelection& selection)
+namespace
 {
-  if (selection.recommended >= 0 && selection.families[std::size_t(selection.recommended)].mainBody.Chosen())
+
+/// The recommended family if it is `usable`, else the usable one with the fewest failing checks;
+/// −1 when none is usable.
+template<typename Usable>
+int BestFamily(const DeviceSelection& selection, const Usable& usable)
+{
+  if (selection.recommended >= 0 && usable(selection.families[std::size_t(selection.recommended)]))
     return selection.recommended;
   int best = -1;
   for (int i = 0; i < static_cast<int>(selection.families.size()); ++i)
-    if (selection.families[std::size_t(i)].mainBody.Chosen() &&
+    if (usable(selection.families[std::size_t(i)]) &&
         (best < 0 || selection.families[std::size_t(i)].Count(CheckStatus::Fail) <
                        selection.families[std::size_t(best)].Count(CheckStatus::Fail)))
       best = i;
   return best;
 }
 
+} // namespace
+
+int FamilyForMainBody(const DeviceSelection& selection)
+{
+  return BestFamily(selection, [](const FamilyEvaluation& f) { return f.mainBody.Chosen(); });
+}
+
 int FamilyToSimulate(const DeviceSelection& selection)
 {
-  const auto complete = [](const FamilyEvaluation& f)
-  { return f.mainBody.Chosen() && f.rightLimb.Chosen() && f.leftLimb.Chosen(); };
-  if (selection.recommended >= 0 && complete(selection.families[selection.recommended]))
-    return selection.recommended;
-  int best = -1;
-  for (int i = 0; i < static_cast<int>(selection.families.size()); ++i)
-    if (complete(selection.families[i]) && (best < 0 || selection.families[i].Count(CheckStatus::Fail) <
-                                                          selection.families[best].Count(CheckStatus::Fail)))
-      best = i;
-  return best;
+  return BestFamily(selection, [](const FamilyEvaluation& f)
+                    { return f.mainBody.Chosen() && f.rightLimb.Chosen() && f.leftLimb.Chosen(); });
 }
 
 RepairPlan PlanRepair(CtImage::ConstPointer ct,

@@ -28,7 +28,8 @@
 /// into the left leg's lateral half (j ↦ (n/2 − j) mod n); the two legs' medial halves into each
 /// other through the crotch (right leg upward, then left leg downward, same j); and the left
 /// leg's anterior and posterior columns from the trunk's last two rings (the trunk's columns
-/// there continue into the right leg; the stiffness counts a shared pair once, StiffnessMatrix.h). Every vertex thus has s-neighbours two steps away on either side unless it ends a chain,
+/// there continue into the right leg; the stiffness counts a shared pair once, StiffnessMatrix.h).
+/// Every vertex thus has s-neighbours two steps away on either side unless it ends a chain,
 /// which is what fourth-order derivatives in the Euler–Lagrange equation (4) need there. The
 /// triangulation (for display) follows the same element: the two trunk–leg strips, the crotch
 /// strip and one triangle anteriorly and one posteriorly close the surface without gaps.
