@@ -48,6 +48,9 @@ int main(int argc, char* argv[])
     paths.measurements = outputMeasurements;
     paths.diameterProfile = outputDiameterProfile;
     paths.report = outputReport;
+    paths.reportHtml = outputReportHtml;
+    paths.straightenedVolume = outputStraightenedVolume;
+    paths.straightenedLeftVolume = outputStraightenedLeftVolume;
     paths.returnParameterFile = returnParameterFile;
     const auto contour = [&](const std::string& mode, const std::vector<double>& diametersMm)
     {

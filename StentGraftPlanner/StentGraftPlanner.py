@@ -16,6 +16,7 @@ import json
 import logging
 import os
 import tempfile
+import time
 
 import ctk
 import qt
@@ -91,6 +92,7 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
         self._parameterNode = None
         self._updatingGUI = False
         self._run = None
+        self._reportHtmlPath = None  # the last run's visual report
 
     def setup(self):
         ScriptedLoadableModuleWidget.setup(self)
@@ -112,6 +114,8 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
             widget = getattr(self.ui, setting.widget)
             widget.connect(_changeSignal(widget), self.updateParameterNodeFromGUI)
         self.ui.applyButton.connect("clicked(bool)", self.onApplyButton)
+        self.ui.openReportButton.connect("clicked(bool)", self.onOpenReportButton)
+        self.ui.openReportButton.enabled = False
         self.ui.cancelButton.connect("clicked(bool)", self.onCancelButton)
         self.ui.progressBar.hide()
         self.initializeParameterNode()
@@ -208,6 +212,11 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
             self.ui.statusLabel.text = "Running StentGraftSimulation..."
             self.updateGUIFromParameterNode()
 
+    def onOpenReportButton(self):
+        """The visual report in the system's browser (print it to PDF from there)."""
+        if self._reportHtmlPath:
+            qt.QDesktopServices.openUrl(qt.QUrl.fromLocalFile(self._reportHtmlPath))
+
     def onCancelButton(self):
         if self._run is not None:
             self._run.cliNode.Cancel()
@@ -225,6 +234,9 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
             slicer.util.errorDisplay("The planning run failed.\n\n" + errorText)
             return
         self.ui.statusLabel.text = "Done."
+        self._reportHtmlPath = results.reportHtmlPath
+        self.ui.openReportButton.enabled = self._reportHtmlPath is not None
+        self.ui.openReportButton.toolTip = self._reportHtmlPath or "The run wrote no visual report."
         self.ui.measurementsTableView.setMRMLTableNode(self._parameterNode.GetNodeReference("resultsTable"))
         self.ui.recommendationLabel.text = results.recommendationHtml
         self.ui.resultsCollapsibleButton.collapsed = False
@@ -237,6 +249,7 @@ class PlanningResults:
     def __init__(self, values, report, measurementRows):
         self.values = values
         self.report = report
+        self.reportHtmlPath = None  # the visual report, when the run wrote one
         self.tableRows = Results.resultsTableRows(values, measurementRows)
         self.recommendationHtml = Results.recommendationHtml(report)
 
@@ -281,7 +294,7 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
             parameterNode.SetNodeReferenceID(role, node.GetID())
         return node
 
-    def cliParameters(self, parameterNode, reportPath):
+    def cliParameters(self, parameterNode, reportPath, reportHtmlPath=None):
         nodes, pointCounts = {}, {}
         for role in Settings.NODE_ROLES:
             if role.channel == "output":
@@ -293,7 +306,14 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
                 # Slicer sends the first selected control point of a non-multiple <point>.
                 selected = [i for i in range(node.GetNumberOfControlPoints()) if node.GetNthControlPointSelected(i)]
                 pointCounts[role.name] = len(selected)
-        return Settings.buildCliParameters(self.settings(parameterNode), nodes, pointCounts, reportPath)
+        return Settings.buildCliParameters(self.settings(parameterNode), nodes, pointCounts, reportPath,
+                                           reportHtmlPath)
+
+    def _newReportHtmlPath(self, parameterNode):
+        """The visual report's path: the reportFolder setting, else Slicer's temporary folder."""
+        volume = parameterNode.GetNodeReference("inputVolume")
+        return Settings.reportHtmlPath(self.settings(parameterNode)["reportFolder"], slicer.app.temporaryPath,
+                                       volume.GetName() if volume is not None else "", time.strftime("%Y%m%d-%H%M%S"))
 
     def _newReportPath(self):
         handle, path = tempfile.mkstemp(prefix="StentGraftPlanner-", suffix=".json", dir=slicer.app.temporaryPath)
@@ -303,13 +323,14 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
     def startPlanning(self, parameterNode, onFinished, onProgress=None):
         """Start the CLI in the background; onFinished(results, errorText) is called once it ends."""
         reportPath = self._newReportPath()
+        reportHtmlPath = self._newReportHtmlPath(parameterNode)
         try:
-            parameters = self.cliParameters(parameterNode, reportPath)
+            parameters = self.cliParameters(parameterNode, reportPath, reportHtmlPath)
             cliNode = CliRun.startCli(slicer.cli, slicer.modules, parameters, waitForCompletion=False)
         except Exception:
             os.remove(reportPath)
             raise
-        run = CliRun.PlanningRun(cliNode, reportPath, parameterNode)
+        run = CliRun.PlanningRun(cliNode, reportPath, parameterNode, reportHtmlPath)
 
         def finish():
             if run.abandoned:  # the scene closed after this finish was scheduled
@@ -345,11 +366,12 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
     def runPlanning(self, parameterNode):
         """Run the CLI and wait; returns PlanningResults, raises RuntimeError with the CLI's error text."""
         reportPath = self._newReportPath()
+        reportHtmlPath = self._newReportHtmlPath(parameterNode)
         run = None
         try:
-            parameters = self.cliParameters(parameterNode, reportPath)
+            parameters = self.cliParameters(parameterNode, reportPath, reportHtmlPath)
             cliNode = CliRun.startCli(slicer.cli, slicer.modules, parameters, waitForCompletion=True)
-            run = CliRun.PlanningRun(cliNode, reportPath, parameterNode)
+            run = CliRun.PlanningRun(cliNode, reportPath, parameterNode, reportHtmlPath)
             return self.finishPlanning(run)
         finally:
             if run is not None:
@@ -373,6 +395,7 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
             report = Results.parseReport(reportFile.read())
         values = Results.withReportVerdicts(Results.readReturnValues(cliNode.GetParameterAsString), report)
         results = PlanningResults(values, report, _tableRows(run.parameterNode.GetNodeReference("outputMeasurements")))
+        results.reportHtmlPath = run.reportHtmlPath if run.reportHtmlPath and os.path.exists(run.reportHtmlPath) else None
         self.showOutputs(run.parameterNode)
         self.showDiameterProfile(run.parameterNode)
         self.showResultsTable(run.parameterNode, results.tableRows)
@@ -446,6 +469,23 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
         landmarks.CreateDefaultDisplayNodes()
         landmarks.GetDisplayNode().SetSelectedColor(*Appearance.LOOKS["outputLandmarks"].color)
         landmarks.SetLocked(True)
+        self.showStraightenedVolume(parameterNode)
+
+    def showStraightenedVolume(self, parameterNode):
+        """The straightened CT in the coronal (green) slice view: a stretched view of the aorta and
+        right iliac, scrolled through by the slice offset; its axial slices are cross-sections."""
+        volume = parameterNode.GetNodeReference("outputStraightenedVolume")
+        layoutManager = slicer.app.layoutManager()
+        if volume is None or volume.GetImageData() is None or layoutManager is None:
+            return
+        volume.CreateDefaultDisplayNodes()
+        volume.GetDisplayNode().SetAutoWindowLevel(False)
+        volume.GetDisplayNode().SetWindowLevel(600, 150)  # the report's CTA window, -150 ... 450 HU
+        green = layoutManager.sliceWidget("Green")
+        if green is None:
+            return
+        green.sliceLogic().GetSliceCompositeNode().SetBackgroundVolumeID(volume.GetID())
+        green.sliceLogic().FitSliceToAll()
 
     def showResultsTable(self, parameterNode, rows):
         """The results table (Results.RESULTS_COLUMNS, one row per return value) as a locked table
@@ -553,6 +593,12 @@ class StentGraftPlannerTest(ScriptedLoadableModuleTest):
         logic, parameterNode = self._parameterNode(volume, seedRas)
         results = logic.runPlanning(parameterNode)
         sizing = truth["sizing"]
+        # Issue 15: the visual report is written beside the scene's temporary files, and the
+        # straightened volume comes back with its centerline abscissa along the third axis.
+        self.assertTrue(results.reportHtmlPath and os.path.getsize(results.reportHtmlPath) > 0)
+        straightened = parameterNode.GetNodeReference("outputStraightenedVolume")
+        self.assertIsNotNone(straightened.GetImageData())
+        self.assertGreater(straightened.GetImageData().GetDimensions()[2], 100)
         # Issue 12's bar on the noisy 0.8 x 0.8 x 1.0 mm phantom with a wall: outer (a)-(f) within 1.0 mm
         # of the outer truth (sizing's "outer..." keys), the lumen values within issue 5's 1.0 mm of the
         # lumen truth (sizing's plain keys).

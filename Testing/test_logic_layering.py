@@ -12,7 +12,7 @@ import os
 import re
 import sys
 
-ORDER = ["Common", "Segmentation", "Centerlines", "Wall", "Stent", "Measurement", "Device", "Pipeline"]
+ORDER = ["Common", "Segmentation", "Centerlines", "Wall", "Stent", "Measurement", "Device", "Pipeline", "Views"]
 ALLOWED = {stage: set(ORDER[:i + 1]) for i, stage in enumerate(ORDER)}
 ALLOWED["Phantom"] = {"Common", "Phantom"}
 ALLOWED["IO"] = set(ORDER) | {"Phantom", "IO"}

@@ -15,6 +15,7 @@ SGP_PACKAGES=(
   libinsighttoolkit5-dev libvtk9-dev libtclap-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev
   python3 python3-numpy python3-scipy python3-skimage python3-jsonschema python3-vtk9 python3-pyflakes
   libgdcm-tools
+  chromium # the visual report is checked in a real browser (Testing/CLI/test_report_html.py)
 )
 
 sgp_install() {

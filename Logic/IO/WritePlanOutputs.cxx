@@ -1,11 +1,13 @@
 #include "IO/WritePlanOutputs.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
 #include "IO/DeviceSelectionToJson.h"
+#include "IO/ReportHtml.h"
 #include "IO/WriteCenterlines.h"
 #include "IO/WriteImage.h"
 #include "IO/WriteMeasurements.h"
@@ -14,6 +16,9 @@
 #include "IO/WriteStentModel.h"
 #include "IO/WriteTextFile.h"
 #include "Pipeline/PlanValues.h"
+#include "Views/ReportFigures.h"
+#include "Views/ResliceCt.h"
+#include "Views/VesselPath.h"
 
 namespace sgp
 {
@@ -70,15 +75,35 @@ nlohmann::json PlanReportJson(const RepairPlan& plan, const PlanRunInfo& run)
   return report;
 }
 
+const CtImage& CtOf(const RepairPlan& plan)
+{
+  if (!plan.ctAroundLumen)
+    throw std::logic_error("WritePlanOutputs: a view of the CT was asked for, but PlanRequest::ctAroundLumen was not");
+  return *plan.ctAroundLumen;
+}
+
+/// The straightened volume's voxel: the CT's finest spacing, at least 0.5 mm (finer only adds
+/// interpolated voxels), at most 1 mm.
+double StraightenedStepMm(const CtImage& ct)
+{
+  const auto sp = ct.GetSpacing();
+  return std::clamp(std::min({ sp[0], sp[1], sp[2] }), 0.5, 1.0);
+}
+
+/// Across the straightened volume: ±40 mm holds a 66 mm sac with its wall.
+constexpr double StraightenedHalfWidthMm = 40.0;
+
 } // namespace
 
 PlanRequest PlanRequestFor(const PlanOutputPaths& paths)
 {
   PlanRequest request;
+  const bool straightened = !paths.straightenedVolume.empty() || !paths.straightenedLeftVolume.empty();
   if (!paths.returnParameterFile.empty() || !paths.simulatedStentModel.empty() || !paths.report.empty() ||
-      !paths.measurements.empty())
+      !paths.reportHtml.empty() || !paths.measurements.empty())
     request.through = PlanStage::Device;
-  else if (!paths.diameterProfile.empty() || !paths.wallLabelMap.empty() || !paths.outerWallModel.empty())
+  else if (!paths.diameterProfile.empty() || !paths.wallLabelMap.empty() || !paths.outerWallModel.empty() ||
+           straightened)
     request.through = PlanStage::Measurements;
   else if (!paths.stentModel.empty() || !paths.initialStentModel.empty())
     request.through = PlanStage::StentSurface;
@@ -89,6 +114,7 @@ PlanRequest PlanRequestFor(const PlanOutputPaths& paths)
   request.initialSurfaceValues = !paths.initialStentModel.empty();
   request.requireSimulatedGraft = !paths.simulatedStentModel.empty();
   request.wallLabelMap = !paths.wallLabelMap.empty();
+  request.ctAroundLumen = straightened || !paths.reportHtml.empty();
   return request;
 }
 
@@ -156,6 +182,23 @@ void WritePlanOutputs(const RepairPlan& plan,
   {
     Require(plan, PlanStage::Device, "outputReport");
     WriteTextFile(PlanReportJson(plan, run).dump(2) + "\n", outputs.Stage(paths.report), "planning report");
+  }
+  const std::string* straightened[2] = { &paths.straightenedVolume, &paths.straightenedLeftVolume };
+  for (int side = 0; side < 2; ++side)
+    if (!straightened[side]->empty())
+    {
+      Require(plan, PlanStage::Measurements, side == 0 ? "outputStraightenedVolume" : "outputStraightenedLeftVolume");
+      const CtImage& ct = CtOf(plan);
+      const Centerline& iliac = side == 0 ? plan.centerlines.rightIliac : plan.centerlines.leftIliac;
+      const VesselPath path = SampleVesselPath(plan.centerlines.aorta, iliac, StraightenedStepMm(ct));
+      WriteCtImage(*StraightenVolume(ct, path, StraightenedHalfWidthMm), outputs.Stage(*straightened[side]));
+    }
+  if (!paths.reportHtml.empty())
+  {
+    Require(plan, PlanStage::Device, "outputReportHtml");
+    const ReportFigures figures = BuildReportFigures(plan, CtOf(plan));
+    const ReportRun about{ run.inputVolume, run.deviceCatalog, run.neckRules, ReportDateNow(), SGP_VERSION };
+    WriteTextFile(ReportHtml(plan, figures, about), outputs.Stage(paths.reportHtml), "visual planning report");
   }
   if (!paths.returnParameterFile.empty())
   {

@@ -21,18 +21,21 @@ namespace sgp
 
 struct PlanOutputPaths
 {
-  std::string labelMap;            ///< the lumen, on the input's grid
-  std::string wallLabelMap;        ///< lumen 1, thrombus and wall 2, calcium 3, on the input's grid
-  std::string outerWallModel;      ///< the traced outer wall, .vtp
-  std::string centerlines;         ///< .vtp
-  std::string landmarks;           ///< .mrk.json
-  std::string stentModel;          ///< the fitted surface
-  std::string initialStentModel;   ///< the surface before the fit
-  std::string simulatedStentModel; ///< the simulated graft with its fit-check point data
-  std::string measurements;        ///< the table, .csv
-  std::string diameterProfile;     ///< per ring, .csv
-  std::string report;              ///< the whole plan, .json
-  std::string returnParameterFile; ///< SEM return values; asks for the whole plan
+  std::string labelMap;               ///< the lumen, on the input's grid
+  std::string wallLabelMap;           ///< lumen 1, thrombus and wall 2, calcium 3, on the input's grid
+  std::string outerWallModel;         ///< the traced outer wall, .vtp
+  std::string centerlines;            ///< .vtp
+  std::string landmarks;              ///< .mrk.json
+  std::string stentModel;             ///< the fitted surface
+  std::string initialStentModel;      ///< the surface before the fit
+  std::string simulatedStentModel;    ///< the simulated graft with its fit-check point data
+  std::string measurements;           ///< the table, .csv
+  std::string diameterProfile;        ///< per ring, .csv
+  std::string report;                 ///< the whole plan, .json
+  std::string reportHtml;             ///< the visual report, self-contained .html (ReportHtml.h)
+  std::string straightenedVolume;     ///< the CT straightened along aorta → right iliac (ResliceCt.h)
+  std::string straightenedLeftVolume; ///< likewise along aorta → left iliac
+  std::string returnParameterFile;    ///< SEM return values; asks for the whole plan
 };
 
 /// What the report says of the run beside the plan.
@@ -45,8 +48,9 @@ struct PlanRunInfo
 
 /// The stages `paths` need: the whole plan for the return values (Slicer always asks for them,
 /// and its panel keeps stale values of any that is missing), the measurements table or the
-/// report; measurements for the diameter profile and the wall outputs; the fitted surface for the stent models;
-/// centerlines for centerlines or landmarks; else the segmentation only.
+/// report (JSON or HTML; the HTML one keeps the CT crop for its images); measurements for the
+/// diameter profile, the wall outputs and the straightened volumes (with the CT crop); the fitted surface for the stent
+/// models; centerlines for centerlines or landmarks; else the segmentation only.
 PlanRequest PlanRequestFor(const PlanOutputPaths& paths);
 
 /// Writes every output named in `paths` except the label map (the front end writes that as soon

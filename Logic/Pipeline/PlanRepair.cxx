@@ -387,6 +387,8 @@ RepairPlan PlanRepair(CtImage::ConstPointer ct,
     return plan;
 
   ReportWall(traced.get(), params, report, plan);
+  if (request.ctAroundLumen)
+    plan.ctAroundLumen = around;
   around = nullptr;
   Measure(wall, params, report, plan);
   plan.reached = PlanStage::Measurements;

@@ -27,7 +27,7 @@
 /// segmented, keeping (when the plan goes on to the measurements) only a crop around the lumen,
 /// grown by the outer-wall rays' reach, for the wall stage; the crop goes once the wall is traced.
 /// So a caller that hands over its only reference (std::move) frees the full-resolution input
-/// before thinning starts.
+/// before thinning starts. With PlanRequest::ctAroundLumen the crop is kept in the plan.
 ///
 /// Frames and units: every point LPS mm, diameters and lengths mm, angles degrees.
 /// Errors: InputError and AlgorithmError from the stages (their messages name the value seen and
@@ -82,7 +82,10 @@ struct PlanRequest
   std::optional<Point3> lowestRenalOstiumLps;
   /// The wall label map (WallLabelMap: lumen, thrombus and wall, calcium), when the plan reaches
   /// the measurements.
-  bool wallLabelMap = false;
+  bool wallLabelMap =
+    false; /// Keep the CT crop around the lumen (the wall stage's) in RepairPlan::ctAroundLumen, for the
+  /// views a report draws; needs a plan that reaches the measurements.
+  bool ctAroundLumen = false;
 };
 
 /// Every stage's parameters; defaults equal the XML defaults of StentGraftSimulation.
@@ -138,6 +141,9 @@ struct RepairPlan
 
   VesselWall vesselWall;          ///< when the plan reaches the measurements
   LabelImage::Pointer wallLabels; ///< on the input's grid, when PlanRequest::wallLabelMap
+  /// The CT within the outer wall's ray reach (VesselWallParams: 45 mm) of the lumen's bounding
+  /// box, HU, when PlanRequest::ctAroundLumen (else null).
+  CtImage::Pointer ctAroundLumen;
   Measurements measurements;
   NeckAssessment neck; ///< the hostile-neck rules on the measurements (empty without rules)
 

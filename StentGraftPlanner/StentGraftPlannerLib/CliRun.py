@@ -49,14 +49,16 @@ PROGRESS, FINISH = "progress", "finish"
 
 
 class PlanningRun:
-    """One CLI run in flight: its CLI node, the temporary report path and the parameter node.
+    """One CLI run in flight: its CLI node, the temporary report path, the visual report's path (None:
+    not asked for) and the parameter node.
 
     cliNode needs AddObserver(event, callback) -> tag, RemoveObserver(tag), IsBusy() and Cancel().
     """
 
-    def __init__(self, cliNode, reportPath, parameterNode):
+    def __init__(self, cliNode, reportPath, parameterNode, reportHtmlPath=None):
         self.cliNode = cliNode
         self.reportPath = reportPath
+        self.reportHtmlPath = reportHtmlPath  # the visual report: kept after the run (the user opens it)
         self.parameterNode = parameterNode
         self.observers = []
         self.finishing = False

@@ -18,6 +18,7 @@ Nothing here imports Slicer: nodes are passed through as opaque objects.
 import collections
 import json
 import math
+import os
 
 Setting = collections.namedtuple("Setting", "name kind default widget cli choices")
 Setting.__doc__ = """One panel setting.
@@ -74,6 +75,8 @@ SETTINGS = (
     _setting("deviceCatalogPath", "str", "", "deviceCatalogPathLineEdit", cli=False),
     # Hostile-neck rule set: the CLI's neckRules, sent only when a file is chosen.
     _setting("neckRulesPath", "str", "", "neckRulesPathLineEdit", cli=False),
+    # Where the visual report (HTML) goes; empty: Slicer's temporary folder.
+    _setting("reportFolder", "str", "", "reportFolderPathLineEdit", cli=False),
 )
 
 SETTINGS_BY_NAME = {s.name: s for s in SETTINGS}
@@ -103,6 +106,9 @@ NODE_ROLES = (
     NodeRole("outputSimulatedStentModel", "vtkMRMLModelNode", "output", False, "Simulated stent graft"),
     NodeRole("outputMeasurements", "vtkMRMLTableNode", "output", False, "Measurements"),
     NodeRole("outputDiameterProfile", "vtkMRMLTableNode", "output", False, "Diameter profile"),
+    # Axial slices: cross-sections along the centerline; coronal and sagittal: stretched views.
+    NodeRole("outputStraightenedVolume", "vtkMRMLScalarVolumeNode", "output", False,
+             "Straightened CT (aorta to right iliac)"),
 )
 
 NODE_ROLES_BY_NAME = {r.name: r for r in NODE_ROLES}
@@ -110,6 +116,18 @@ OUTPUT_ROLES = tuple(r for r in NODE_ROLES if r.channel == "output")
 
 #: CLI parameter of the JSON report (a ``file`` output: Slicer passes the path unchanged).
 REPORT_PARAMETER = "outputReport"
+
+#: CLI parameter of the visual report (HTML, a ``file`` output like the JSON one).
+REPORT_HTML_PARAMETER = "outputReportHtml"
+
+
+def reportHtmlPath(folder, temporaryFolder, volumeName, stamp):
+    """Where a run's visual report goes: ``folder`` (the reportFolder setting) or, when it is empty,
+    ``temporaryFolder`` (Slicer's), named after the volume and ``stamp`` (e.g. 20261202-131500) so
+    that a later run does not overwrite an earlier report. Characters a file name cannot hold
+    become "_"."""
+    safe = "".join(c if c.isalnum() or c in "-_." else "_" for c in (volumeName or "volume")) or "volume"
+    return os.path.join(folder or temporaryFolder, "StentGraftPlanner-%s-%s.html" % (safe, stamp))
 
 #: Optional input files: CLI parameter -> the setting holding its path (sent only when not empty).
 FILE_PARAMETERS = (("deviceCatalog", "deviceCatalogPath"), ("neckRules", "neckRulesPath"))
@@ -243,7 +261,7 @@ def validateSettings(settings):
     deviceArgument(settings["deviceFamily"], settings["deviceDiameterMm"])
 
 
-def buildCliParameters(settings, nodes, pointCounts, reportPath):
+def buildCliParameters(settings, nodes, pointCounts, reportPath, reportHtmlPath=None):
     """The parameter dictionary for ``slicer.cli.run(slicer.modules.stentgraftsimulation, ...)``.
 
     settings: a dict as from ``defaultSettings`` (all names present).
@@ -251,6 +269,7 @@ def buildCliParameters(settings, nodes, pointCounts, reportPath):
     pointCounts: role name -> number of control points, for the markups inputs (seed and
         lowestRenalOstium); Slicer sends only the first point of a non-multiple ``point``.
     reportPath: where the CLI writes its JSON report (a temporary file).
+    reportHtmlPath: where it writes the visual report (``reportHtmlPath()``); None: not asked for.
 
     Raises ValueError when a required input is missing, a point list is empty, or a setting rule
     is broken (``validateSettings``). Floats go as text formatted by ``formatNumber`` (slicer.cli
@@ -290,4 +309,6 @@ def buildCliParameters(settings, nodes, pointCounts, reportPath):
             continue  # optional landmark, not placed: the CLI detects the renal arteries itself
         parameters[role.name] = node
     parameters[REPORT_PARAMETER] = str(reportPath)
+    if reportHtmlPath:
+        parameters[REPORT_HTML_PARAMETER] = str(reportHtmlPath)
     return parameters

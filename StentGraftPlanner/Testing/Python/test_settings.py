@@ -182,6 +182,20 @@ class BuildCliParametersTest(unittest.TestCase):
         self.assertFalse(Settings.SETTINGS_BY_NAME["neckRulesPath"].cli)  # combined, not sent as itself
         self.assertNotIn("neckRulesPath", parameters)
 
+    def test_VisualReport_IsSentOnlyWhenAPathIsGiven(self):
+        # Issue 15 item 3: the panel asks for the HTML report and offers "Open report" after the run.
+        self.assertNotIn("outputReportHtml", self.build())
+        parameters = Settings.buildCliParameters(Settings.defaultSettings(), allNodes(), ONE_POINT, "/tmp/report.json",
+                                                 "/cases/a b/StentGraftPlanner-CT-20261202-131500.html")
+        self.assertEqual(parameters["outputReportHtml"], "/cases/a b/StentGraftPlanner-CT-20261202-131500.html")
+        self.assertFalse(Settings.SETTINGS_BY_NAME["reportFolder"].cli)
+
+    def test_ReportHtmlPath_InTheChosenFolderElseTheTemporaryOne_NamedSafely(self):
+        self.assertEqual(Settings.reportHtmlPath("/cases", "/tmp/slicer", "CTA 1/2", "20261202-131500"),
+                         "/cases/StentGraftPlanner-CTA_1_2-20261202-131500.html")
+        self.assertEqual(Settings.reportHtmlPath("", "/tmp/slicer", "", "20261202-131500"),
+                         "/tmp/slicer/StentGraftPlanner-volume-20261202-131500.html")
+
     def test_NeckRulesPath_SurvivesTheParameterNode(self):
         settings = dict(Settings.defaultSettings(), neckRulesPath="/tmp/rules.json")
         back, problems = Settings.settingsFromStrings(Settings.settingsToStrings(settings))
