@@ -27,6 +27,9 @@ void PrintUnmeasuredValues(const std::vector<PlanValue>& values, std::ostream& e
 void PrintPlanSummary(const RepairPlan& plan, const std::string& acmMode, std::ostream& out)
 {
   const LumenSegmentation& lumen = plan.lumen;
+  if (plan.seedAutomatic)
+    out << "Seed: automatic, RAS " << FormatNumber(-plan.seedLps.x()) << "," << FormatNumber(-plan.seedLps.y()) << ","
+        << FormatNumber(plan.seedLps.z()) << " mm: " << plan.seedDescription << std::endl;
   out << "Lumen: " << FormatNumber(lumen.volumeMl) << " mL; window " << FormatNumber(lumen.lowerHu, 0) << " to "
       << FormatNumber(lumen.upperHu, 0) << " HU (seed median " << FormatNumber(lumen.seedMedianHu, 0) << " HU, sigma "
       << FormatNumber(lumen.seedSigmaHu, 0) << " HU, from " << lumen.windowSource << "); boundary at "

@@ -4,6 +4,7 @@
 // once, print the summary. No stage logic lives here.
 #include <cstdlib>
 #include <future>
+#include <optional>
 #include <iostream>
 
 #include <itkObject.h>
@@ -88,6 +89,7 @@ int main(int argc, char* argv[])
     }
 
     SlicerProgress progress(std::cout, { { "ReadVolume", 2.0 },
+                                         { "FindSeed", 0.5 },
                                          { "SegmentLumen", 4.0 },
                                          { "ThinLumen", 2.0 },
                                          { "ExtractCenterlines", 1.0 },
@@ -119,7 +121,8 @@ int main(int argc, char* argv[])
                                      { WriteLabelMap(*mask, staged); });
     };
     // The plan takes the only reference to the CT, so the input is freed once the lumen is segmented.
-    const RepairPlan plan = PlanRepair(std::move(volume.image), RasToLps(seed), request, params, observer);
+    const std::optional<Point3> seedLps = seed.empty() ? std::nullopt : std::optional<Point3>(RasToLps(seed));
+    const RepairPlan plan = PlanRepair(std::move(volume.image), seedLps, request, params, observer);
 
     progress.Begin("WriteOutputs", "Writing the outputs");
     if (labelMapWritten.valid())

@@ -163,11 +163,8 @@ void ValidateParameters(const std::string& inputVolume,
   {
     throw InputError("No input volume given; expected a CT volume file or DICOM folder as the first argument.");
   }
-  if (seed.empty())
-  {
-    throw InputError("No seed given; expected --seed x,y,z (mm, RAS) inside the aortic lumen.");
-  }
-  RasToLps(seed);
+  if (!seed.empty()) // without one the aorta is found automatically (PlanRepair)
+    RasToLps(seed);
   ValidateRegionGrowingParams(params);
   ValidateSkeletonGraphParams(graphParams);
   ValidateCenterlineParams(centerlineParams);

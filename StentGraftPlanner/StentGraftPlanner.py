@@ -44,7 +44,8 @@ class StentGraftPlanner(ScriptedLoadableModule):
         self.parent.contributors = ["StentGraftPlanner developers"]
         self.parent.helpText = (
             "Plans the endovascular repair of an abdominal aortic aneurysm from a CT angiography volume: "
-            "place a seed in the aortic lumen (optionally the lower edge of the lowest renal artery), "
+            "place a seed in the aortic lumen or leave it to the CLI to find the aorta (optionally the lower edge of "
+            "the lowest renal artery), "
             "choose a device family or leave it on auto, and press Apply. Diameters (a)-(f) are given outer wall "
             "to outer wall (what the instructions for use size on) and of the lumen, each marked with its wall. "
             '<a href="https://github.com/StentGraftPlanner/SlicerStentGraftPlanner#readme">Documentation</a>.'
@@ -185,7 +186,8 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
             self.ui.lowerHuSpinBox.enabled = manual
             self.ui.upperHuSpinBox.enabled = manual
             self.ui.windowSigmasSpinBox.enabled = not manual
-            ready = self.ui.inputVolumeSelector.currentNode() and self.ui.seedSelector.currentNode()
+            # No seed needed: without one the CLI finds the aorta, and the panel places the seed it used.
+            ready = self.ui.inputVolumeSelector.currentNode()
             self.ui.applyButton.enabled = bool(ready) and self._run is None
             self.ui.cancelButton.enabled = self._run is not None
         finally:
@@ -396,6 +398,7 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
         values = Results.withReportVerdicts(Results.readReturnValues(cliNode.GetParameterAsString), report)
         results = PlanningResults(values, report, _tableRows(run.parameterNode.GetNodeReference("outputMeasurements")))
         results.reportHtmlPath = run.reportHtmlPath if run.reportHtmlPath and os.path.exists(run.reportHtmlPath) else None
+        self.placeAutomaticSeed(run.parameterNode, Results.automaticSeed(cliNode.GetParameterAsString))
         self.showOutputs(run.parameterNode)
         self.showDiameterProfile(run.parameterNode)
         self.showResultsTable(run.parameterNode, results.tableRows)
@@ -471,6 +474,16 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
         landmarks.SetLocked(True)
         self.showStraightenedVolume(parameterNode)
 
+    def placeAutomaticSeed(self, parameterNode, seedRas):
+        """The seed the CLI found (no seed was placed) as the seed point list's one point, which the
+        user can move and run again from."""
+        if seedRas is None:
+            return
+        seed = self._referencedNode(parameterNode, "seed", "vtkMRMLMarkupsFiducialNode", "Seed")
+        seed.RemoveAllControlPoints()
+        index = seed.AddControlPoint(vtk.vtkVector3d(*seedRas))
+        seed.SetNthControlPointLabel(index, "automatic seed")
+
     def showStraightenedVolume(self, parameterNode):
         """The straightened CT in the coronal (green) slice view: a stretched view of the aorta and
         right iliac, scrolled through by the slice offset; its axial slices are cross-sections."""
@@ -545,7 +558,7 @@ class StentGraftPlannerTest(ScriptedLoadableModuleTest):
         self.setUp()
         self.test_PhantomSizing_MatchesTruth()
         self.setUp()
-        self.test_EmptySeed_RaisesValueErrorAndLeavesNoCliNode()
+        self.test_NoSeed_TheCliFindsTheAortaAndThePanelPlacesTheSeed()
         self.setUp()
         self.test_SeedOutsideImage_RaisesWithCliErrorText()
 
@@ -643,12 +656,21 @@ class StentGraftPlannerTest(ScriptedLoadableModuleTest):
         self.assertEqual(chart.GetNumberOfPlotSeriesNodes(), 3)
         self.assertEqual(self._cliNodeCount(), 0)  # the temporary CLI node was removed
 
-    def test_EmptySeed_RaisesValueErrorAndLeavesNoCliNode(self):
-        volume = slicer.mrmlScene.AddNewNodeByClass("vtkMRMLScalarVolumeNode", "Empty CT")
+    def test_NoSeed_TheCliFindsTheAortaAndThePanelPlacesTheSeed(self):
+        # Issue 16 item 1: no seed placed, the run finds the aorta; the seed used becomes the seed
+        # list's one point, inside the segmented lumen.
+        volume, truth, seedRas = self._phantom()
         logic, parameterNode = self._parameterNode(volume, None)
-        with self.assertRaises(ValueError):
-            logic.runPlanning(parameterNode)
-        self.assertEqual(self._cliNodeCount(), 0)
+        logic.runPlanning(parameterNode)
+        seed = parameterNode.GetNodeReference("seed")
+        self.assertEqual(seed.GetNumberOfControlPoints(), 1)
+        ras = [0.0, 0.0, 0.0]
+        seed.GetNthControlPointPosition(0, ras)
+        lumen = parameterNode.GetNodeReference("outputLabelMap")
+        rasToIjk = vtk.vtkMatrix4x4()
+        lumen.GetRASToIJKMatrix(rasToIjk)
+        ijk = [int(round(c)) for c in rasToIjk.MultiplyPoint(ras + [1.0])[:3]]
+        self.assertEqual(slicer.util.arrayFromVolume(lumen)[ijk[2], ijk[1], ijk[0]], 1)
 
     def test_SeedOutsideImage_RaisesWithCliErrorText(self):
         volume, truth, seedRas = self._phantom()

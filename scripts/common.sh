@@ -16,6 +16,7 @@ SGP_PACKAGES=(
   python3 python3-numpy python3-scipy python3-skimage python3-jsonschema python3-vtk9 python3-pyflakes
   libgdcm-tools
   chromium # the visual report is checked in a real browser (Testing/CLI/test_report_html.py)
+  snakemake slurm-wlm munge # the cohort workflow (workflows/cohort) and its local and Slurm tests (Testing/Workflow)
 )
 
 sgp_install() {

@@ -79,6 +79,11 @@ void Header(const RepairPlan& plan, const ReportRun& run, std::ostream& out)
       << FormatNumber(spacing[0], 3) << " &#215; " << FormatNumber(spacing[1], 3) << " &#215; "
       << FormatNumber(spacing[2], 3) << " mm</td></tr>"
       << "<tr><td>Run</td><td>" << Escape(run.date) << ", StentGraftPlanner " << Escape(run.version) << "</td></tr>"
+      << "<tr><td>Seed</td><td>RAS " << FormatNumber(-plan.seedLps.x()) << ", " << FormatNumber(-plan.seedLps.y())
+      << ", " << FormatNumber(plan.seedLps.z()) << " mm, "
+      << (plan.seedAutomatic ? "found automatically: " + Escape(plan.seedDescription)
+                             : std::string("given by the user"))
+      << "</td></tr>"
       << "<tr><td>Proximal site</td><td>" << Num(site.abscissaMm) << " mm along the aorta from its top in the scan, "
       << "LPS " << FormatPoint(site.lps) << " mm; source: " << ToString(site.source)
       << (site.renal.empty() ? "" : " (lower edge of the " + Escape(site.renal) + " ostium)") << "</td></tr>"

@@ -12,6 +12,7 @@
 #include "Common/Errors.h"
 #include "Common/Format.h"
 #include "Common/Median.h"
+#include "Segmentation/FindAorticSeed.h"
 #include "Stent/WallDistanceField.h"
 
 namespace sgp
@@ -348,7 +349,7 @@ int FamilyToSimulate(const DeviceSelection& selection)
 }
 
 RepairPlan PlanRepair(CtImage::ConstPointer ct,
-                      const Point3& seedLps,
+                      const std::optional<Point3>& seedLps,
                       const PlanRequest& request,
                       const PlanParams& params,
                       const PlanObserver& observer)
@@ -357,7 +358,22 @@ RepairPlan PlanRepair(CtImage::ConstPointer ct,
     throw InputError("PlanRepair was given no CT volume; expected a 3-D image in HU.");
   RepairPlan plan;
   const StageReporter report(observer, plan);
-  SegmentLumen(*ct, seedLps, params, report, plan);
+  if (seedLps)
+  {
+    plan.seedLps = *seedLps;
+    plan.seedAutomatic = false;
+  }
+  else
+  {
+    report.Begin("FindSeed", "Finding the aorta for an automatic seed");
+    AorticSeedParams search;
+    search.minimumHu = params.growing.seedMinimumHu;
+    const AorticSeed found = FindAorticSeed(*ct, search);
+    plan.seedLps = found.lps;
+    plan.seedAutomatic = true;
+    plan.seedDescription = found.description;
+  }
+  SegmentLumen(*ct, plan.seedLps, params, report, plan);
   // Only the wall stage reads HU after segmentation, and only within its rays' reach of the lumen:
   // keep that crop and free the input if the caller handed it over.
   CtImage::Pointer around = request.through >= PlanStage::Measurements

@@ -10,7 +10,7 @@
 ///      ──► CheckGraftFit
 ///
 /// `PlanRequest::through` says how far to go; each stage needs those before it. Stage names (the
-/// `name` passed to PlanObserver::begin, in this order): SegmentLumen, ThinLumen,
+/// `name` passed to PlanObserver::begin, in this order): FindSeed (only without a seed), SegmentLumen, ThinLumen,
 /// ExtractCenterlines, FitStent, SegmentOuterWall, MeasureAnatomy, SelectDevice, SimulateGraft (the
 /// last only when a family has all three sizes).
 ///
@@ -129,7 +129,10 @@ struct RepairPlan
 {
   PlanStage reached = PlanStage::Segmentation;
 
-  LumenSegmentation lumen; ///< its mask is on the input's grid
+  Point3 seedLps = Point3::Zero(); ///< the seed the lumen was grown from, LPS mm
+  bool seedAutomatic = false;      ///< found by FindAorticSeed (no seed was given)
+  std::string seedDescription;     ///< what the automatic seed is (FindAorticSeed), else empty
+  LumenSegmentation lumen;         ///< its mask is on the input's grid
   CenterlineTree centerlines;
 
   ProximalSite site;
@@ -162,9 +165,10 @@ struct RepairPlan
   bool HasGraft() const { return simulatedFamily >= 0; }
 };
 
-/// Runs the stages up to `request.through`; see the file comment.
+/// Runs the stages up to `request.through`; see the file comment. Without a seed the aorta is
+/// found first (FindAorticSeed, stage FindSeed; its AlgorithmError when none is found).
 RepairPlan PlanRepair(CtImage::ConstPointer ct,
-                      const Point3& seedLps,
+                      const std::optional<Point3>& seedLps,
                       const PlanRequest& request,
                       const PlanParams& params,
                       const PlanObserver& observer = {});

@@ -33,6 +33,8 @@ PlanValue Boolean(const std::string& name, bool value, bool had)
 const std::vector<std::string>& ReturnValueNames()
 {
   static const std::vector<std::string> names = {
+    "seedUsed",
+    "seedSource",
     "lumenVolumeMl",
     "lowerHuUsed",
     "upperHuUsed",
@@ -92,6 +94,10 @@ std::vector<PlanValue> PlanReturnValues(const RepairPlan& plan)
   std::map<std::string, PlanValue> byName;
   const auto put = [&](PlanValue v) { byName[v.name] = std::move(v); };
   const LumenSegmentation& lumen = plan.lumen;
+  // The seed in RAS, as the CLI's --seed takes it (x and y negated from LPS).
+  put({ "seedUsed", FormatReturnValue(-plan.seedLps.x()) + "," + FormatReturnValue(-plan.seedLps.y()) + "," +
+                      FormatReturnValue(plan.seedLps.z()) });
+  put({ "seedSource", plan.seedAutomatic ? "automatic" : "user" });
   put({ "lumenVolumeMl", FormatReturnValue(lumen.volumeMl) });
   put({ "lowerHuUsed", FormatReturnValue(lumen.lowerHu) });
   put({ "upperHuUsed", FormatReturnValue(lumen.upperHu) });

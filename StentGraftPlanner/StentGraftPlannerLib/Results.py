@@ -190,6 +190,19 @@ def readReturnValues(getParameterAsString):
     return values
 
 
+def automaticSeed(getParameterAsString):
+    """The seed the CLI found itself, as an (R, A, S) tuple in mm, or None when the run was given one
+    (seedSource user) or the values cannot be read. getParameterAsString as for readReturnValues."""
+    if (getParameterAsString("seedSource") or "").strip() != "automatic":
+        return None
+    parts = (getParameterAsString("seedUsed") or "").split(",")
+    try:
+        point = tuple(float(p) for p in parts)
+    except ValueError:
+        return None
+    return point if len(point) == 3 and all(math.isfinite(c) for c in point) else None
+
+
 def formatValue(value, unit):
     """"23.4 mm", "12 deg", "1.05", "Yes"/"No" for a verdict, or "not measured" for None."""
     if value is None:

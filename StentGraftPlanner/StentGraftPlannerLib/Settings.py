@@ -93,7 +93,8 @@ defaultName: the scene name given to a new output node.
 
 NODE_ROLES = (
     NodeRole("inputVolume", "vtkMRMLScalarVolumeNode", "input", True, ""),
-    NodeRole("seed", "vtkMRMLMarkupsFiducialNode", "input", True, ""),
+    # Optional: without a point the CLI finds the aorta itself; the panel then places the seed used.
+    NodeRole("seed", "vtkMRMLMarkupsFiducialNode", "input", False, ""),
     NodeRole("lowestRenalOstium", "vtkMRMLMarkupsFiducialNode", "input", False, ""),
     NodeRole("outputLabelMap", "vtkMRMLLabelMapVolumeNode", "output", False, "Lumen"),
     # 1 lumen, 2 thrombus and wall, 3 calcification: everything inside the outer wall.
@@ -271,8 +272,8 @@ def buildCliParameters(settings, nodes, pointCounts, reportPath, reportHtmlPath=
     reportPath: where the CLI writes its JSON report (a temporary file).
     reportHtmlPath: where it writes the visual report (``reportHtmlPath()``); None: not asked for.
 
-    Raises ValueError when a required input is missing, a point list is empty, or a setting rule
-    is broken (``validateSettings``). Floats go as text formatted by ``formatNumber`` (slicer.cli
+    A seed point list that is missing or empty is left out: the CLI then finds the aorta itself.
+    Raises ValueError when a required input is missing, or a setting rule is broken (``validateSettings``). Floats go as text formatted by ``formatNumber`` (slicer.cli
     hands a Python float to ``SetParameterAsDouble``, which keeps six significant digits:
     acmToleranceMm 0.00123456789 would reach the CLI as 0.00123457, 1234567.0 as 1.23457e+06),
     integers as int and the combined arguments as pre-joined strings (slicer.cli turns a list into
@@ -281,11 +282,6 @@ def buildCliParameters(settings, nodes, pointCounts, reportPath, reportHtmlPath=
     validateSettings(settings)
     if nodes.get("inputVolume") is None:
         raise ValueError("No CT volume is selected; choose the CT angiography volume in Inputs.")
-    if nodes.get("seed") is None or pointCounts.get("seed", 0) < 1:
-        raise ValueError(
-            "The seed point list is empty; place one point inside the contrast-filled aortic lumen "
-            "(the aneurysm sac is a good place)."
-        )
     parameters = {}
     for setting in SETTINGS:
         if setting.cli:
@@ -307,6 +303,8 @@ def buildCliParameters(settings, nodes, pointCounts, reportPath, reportHtmlPath=
             continue
         if role.name == "lowestRenalOstium" and pointCounts.get(role.name, 0) < 1:
             continue  # optional landmark, not placed: the CLI detects the renal arteries itself
+        if role.name == "seed" and pointCounts.get(role.name, 0) < 1:
+            continue  # no seed placed: the CLI finds the aorta itself (seedSource automatic)
         parameters[role.name] = node
     parameters[REPORT_PARAMETER] = str(reportPath)
     if reportHtmlPath:

@@ -67,7 +67,7 @@ TEST(StentGraftSimulationXml, Defaults_EqualRegionGrowingParams)
   EXPECT_EQ(devices.forcedDevice, deviceDefaults.forcedDevice); // "auto": every family
   EXPECT_TRUE(lowestRenalOstium.empty());                       // optional: no default point
   EXPECT_TRUE(deviceCatalog.empty());                           // the catalogue beside the CLI
-  EXPECT_TRUE(seed.empty());                                    // required: no default point
+  EXPECT_TRUE(seed.empty());                                    // no default point: without one the seed is found
   EXPECT_EQ(std::string(XMLModuleDescription).rfind("<?xml ", 0), 0u);
 }
 
@@ -75,7 +75,7 @@ TEST(StentGraftSimulationXml, ReturnValues_TheDeclaredOutputScalarsInTheirOrder)
 {
   // Every scalar parameter of channel output, in the XML's order: what PlanReturnValues writes.
   const std::string xml = XMLModuleDescription;
-  const std::regex scalar("<(double|float|integer|boolean|string|string-enumeration)>([\\s\\S]*?)</\\1>");
+  const std::regex scalar("<(double|float|integer|boolean|string|string-enumeration|double-vector)>([\\s\\S]*?)</\\1>");
   const std::regex name("<name>\\s*([A-Za-z0-9_]+)\\s*</name>");
   std::vector<std::string> declared;
   for (auto it = std::sregex_iterator(xml.begin(), xml.end(), scalar); it != std::sregex_iterator(); ++it)

@@ -114,6 +114,21 @@ def fresh_dir(path):
     return path
 
 
+def non_contrast(volume_path, out_path):
+    """The volume with every voxel above 100 HU (the contrast-filled lumen and its blurred edge)
+    set to 45 HU, unenhanced blood, written as raw NRRD on the same grid."""
+    data, header = sem_rules.read_nrrd(volume_path)
+    data = np.where(data > 100, 45, data).astype("<i2")
+    lines = ["NRRD0004", "type: short", "dimension: 3", "space: left-posterior-superior",
+             "sizes: %d %d %d" % (data.shape[2], data.shape[1], data.shape[0]),
+             "space directions: " + " ".join("(%r,%r,%r)" % tuple(d) for d in np.array(header["directions"], float)),
+             "kinds: domain domain domain", "endian: little", "encoding: raw",
+             "space origin: (%r,%r,%r)" % tuple(np.array(header["origin"], float))]
+    with open(out_path, "wb") as handle:
+        handle.write(("\n".join(lines) + "\n\n").encode())
+        handle.write(np.ascontiguousarray(data).tobytes())
+
+
 def crop_above(volume_path, out_path, z_min_lps):
     """Writes the slices of an axis-aligned volume whose LPS z is at least z_min_lps."""
     data, header = sem_rules.read_nrrd(volume_path)
@@ -238,8 +253,11 @@ def main():
              valid_seed + ["--thresholdMode", "manual", "--lowerHu", "600", "--upperHu", "200"],
              ["600", "200"])
 
-    # Case-insensitive: the sentence may begin with "Seed".
-    bad_case(cli, workdir, "no-seed", volume, [], ["seed"], ignore_case=True)
+    # No seed: the CLI looks for the aorta itself (issue 16); on a scan without contrast (the lumen
+    # at 45 HU, unenhanced blood) that is one ERROR saying what was looked for.
+    plain = os.path.join(workdir, "non-contrast.nrrd")
+    non_contrast(volume, plain)
+    bad_case(cli, workdir, "no-seed-no-contrast", plain, [], ["No aorta found", "150 HU", "--seed"])
 
     # Holds in both builds: inside Slicer SEM's GenerateCLP reads the components with atof (a,b,c
     # would be the origin), so the CLI checks the text of its points itself (ValidatePointArguments;

@@ -176,8 +176,9 @@ TEST(PlanRepair, StopsAtTheRequestedStage_LaterResultsEmptyAndValuesUnmeasured)
   for (const PlanValue& v : PlanReturnValues(plan))
   {
     SCOPED_TRACE(v.name);
-    const bool lumenValue =
-      v.name == "lumenVolumeMl" || v.name == "lowerHuUsed" || v.name == "upperHuUsed" || v.name == "edgeHuUsed";
+    // The seed and the lumen's values are known once the lumen is segmented.
+    const bool lumenValue = v.name == "seedUsed" || v.name == "seedSource" || v.name == "lumenVolumeMl" ||
+                            v.name == "lowerHuUsed" || v.name == "upperHuUsed" || v.name == "edgeHuUsed";
     EXPECT_EQ(v.measured, lumenValue);
     if (!lumenValue)
     {

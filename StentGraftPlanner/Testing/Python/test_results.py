@@ -83,6 +83,18 @@ class ReturnValuesTest(unittest.TestCase):
         self.assertEqual(len(lines), len(Results.RETURN_VALUES))
 
 
+class AutomaticSeedTest(unittest.TestCase):
+    # Issue 16 item 1: the panel places the seed the CLI found, and only that one.
+    def test_AutomaticSeed_IsReadAsRas(self):
+        values = {"seedSource": "automatic", "seedUsed": "0.35,-5.15,72.24013729"}
+        self.assertEqual(Results.automaticSeed(values.get), (0.35, -5.15, 72.24013729))
+
+    def test_UserSeedOrUnreadable_IsNone(self):
+        self.assertIsNone(Results.automaticSeed({"seedSource": "user", "seedUsed": "1,2,3"}.get))
+        for text in ("", "1,2", "a,b,c", "nan,1,2"):
+            self.assertIsNone(Results.automaticSeed({"seedSource": "automatic", "seedUsed": text}.get), text)
+
+
 class WallTest(unittest.TestCase):
     """Issue 12 items 3 and 6: (a)-(f) outer wall to outer wall under their old names, the lumen values
     beside them, each labelled with its wall; the thrombus values; -1 read as not measured."""

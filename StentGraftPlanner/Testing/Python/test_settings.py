@@ -229,10 +229,11 @@ class BuildCliParametersTest(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "CT volume"):
             self.build(nodes=dict(allNodes(), inputVolume=None))
 
-    def test_EmptyOrMissingSeed_IsAValueError(self):
+    def test_EmptyOrMissingSeed_IsLeftOutForTheAutomaticSeed(self):
+        # Issue 16 item 1: without a seed the CLI finds the aorta itself.
         for nodes, counts in ((allNodes(), {"seed": 0}), (dict(allNodes(), seed=None), {"seed": 1})):
-            with self.assertRaisesRegex(ValueError, "seed point list is empty"):
-                self.build(nodes=nodes, counts=counts)
+            self.assertNotIn("seed", self.build(nodes=nodes, counts=counts))
+        self.assertIn("seed", self.build())
 
     def test_MissingOutputNode_IsAValueError(self):
         with self.assertRaisesRegex(ValueError, "outputMeasurements"):
