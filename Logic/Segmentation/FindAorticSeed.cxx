@@ -143,41 +143,9 @@ double Score(const Piece& piece)
   return piece.roundness * std::min(piece.diameterMm, 25.0) / 25.0;
 }
 
-/// The piece's pixel farthest from its border (the most homogeneous place to grow from).
-Point3 DeepestPixel(const Level& level, const Piece& piece)
-{
-  std::vector<char> in(level.hu.size(), 0);
-  for (const int p : piece.pixels)
-    in[p] = 1;
-  std::vector<int> border;
-  for (const int p : piece.pixels)
-  {
-    const int i = p % level.w, j = p / level.w;
-    if (i == 0 || j == 0 || i == level.w - 1 || j == level.h - 1 || !in[p - 1] || !in[p + 1] || !in[p - level.w] ||
-        !in[p + level.w])
-      border.push_back(p);
-  }
-  int best = piece.pixels.front();
-  double bestDepth = -1.0;
-  for (const int p : piece.pixels)
-  {
-    double depth = std::numeric_limits<double>::infinity();
-    for (const int b : border)
-      depth = std::min(depth, std::hypot(double(p % level.w - b % level.w), double(p / level.w - b / level.w)));
-    if (depth > bestDepth)
-    {
-      bestDepth = depth;
-      best = p;
-    }
-  }
-  return Point3(level.x0 + (best % level.w) * level.px, level.y0 + (best / level.w) * level.px, level.z);
-}
-
-/// The median HU of the piece's shell (pixels 1–4 mm inside its border, where a bone's cortex
-/// lies) less the median of its core (at least half the deepest pixel's depth): > 0 for a bone,
-/// whose cortex is brighter than its cancellous middle; ≤ 0 for a vessel, whose edge takes partial
-/// volume from the tissue around it.
-double ShellMinusCoreHu(const Level& level, const Piece& piece)
+/// Each pixel's distance to the piece's border (its pixels with a 4-neighbour outside it), mm, in
+/// the order of piece.pixels.
+std::vector<double> PixelDepths(const Level& level, const Piece& piece)
 {
   std::vector<char> in(level.hu.size(), 0);
   for (const int p : piece.pixels)
@@ -191,15 +159,31 @@ double ShellMinusCoreHu(const Level& level, const Piece& piece)
       border.push_back(p);
   }
   std::vector<double> depth(piece.pixels.size(), std::numeric_limits<double>::infinity());
-  double deepest = 0.0;
   for (size_t n = 0; n < piece.pixels.size(); ++n)
   {
     const int p = piece.pixels[n];
     for (const int b : border)
       depth[n] =
         std::min(depth[n], level.px * std::hypot(double(p % level.w - b % level.w), double(p / level.w - b / level.w)));
-    deepest = std::max(deepest, depth[n]);
   }
+  return depth;
+}
+
+/// The piece's pixel farthest from its border (the most homogeneous place to grow from).
+Point3 DeepestPixel(const Level& level, const Piece& piece, const std::vector<double>& depth)
+{
+  const size_t n = static_cast<size_t>(std::max_element(depth.begin(), depth.end()) - depth.begin());
+  const int best = piece.pixels[n];
+  return Point3(level.x0 + (best % level.w) * level.px, level.y0 + (best / level.w) * level.px, level.z);
+}
+
+/// The median HU of the piece's shell (pixels 1–4 mm inside its border, where a bone's cortex
+/// lies) less the median of its core (at least half the deepest pixel's depth): > 0 for a bone,
+/// whose cortex is brighter than its cancellous middle; ≤ 0 for a vessel, whose edge takes partial
+/// volume from the tissue around it.
+double ShellMinusCoreHu(const Level& level, const Piece& piece, const std::vector<double>& depth)
+{
+  const double deepest = *std::max_element(depth.begin(), depth.end());
   std::vector<double> shell, core;
   for (size_t n = 0; n < piece.pixels.size(); ++n)
   {
@@ -308,13 +292,20 @@ AorticSeed FindAorticSeed(const CtImage& ct, const AorticSeedParams& p)
       piece.midlineOffsetMm = std::isfinite(midline) ? std::abs(piece.cx - midline) : 0.0;
       const double score = Score(piece);
       std::string miss;
+      std::vector<double> depth; // measured for the shell test, and kept for the seed
+      const auto shellOverCore = [&]
+      {
+        depth = PixelDepths(level, piece);
+        piece.shellMinusCoreHu = ShellMinusCoreHu(level, piece, depth);
+        return piece.shellMinusCoreHu;
+      };
       if (piece.diameterMm > p.maximumDiameterMm)
         miss = FormatNumber(piece.diameterMm) + " mm wide (at most " + FormatNumber(p.maximumDiameterMm) + ")";
       else if (piece.roundness < p.minimumRoundness)
         miss =
           "roundness " + FormatNumber(piece.roundness, 2) + " (at least " + FormatNumber(p.minimumRoundness, 2) + ")";
       else if (piece.brightFraction > p.maximumBrightFraction || piece.rimMinusMedianHu > 0.0 ||
-               (piece.shellMinusCoreHu = ShellMinusCoreHu(level, piece)) > maximumShellOverCoreHu)
+               shellOverCore() > maximumShellOverCoreHu)
         miss = "bone: its rim " + FormatNumber(std::max(piece.rimMinusMedianHu, piece.shellMinusCoreHu), 0) +
                " HU brighter than its middle, " + FormatNumber(100.0 * piece.brightFraction, 0) +
                " % of it bone-bright (at most " + FormatNumber(100.0 * p.maximumBrightFraction, 0) + " %)";
@@ -340,7 +331,7 @@ AorticSeed FindAorticSeed(const CtImage& ct, const AorticSeedParams& p)
         }
         continue;
       }
-      piece.seed = DeepestPixel(level, piece);
+      piece.seed = DeepestPixel(level, piece, depth); // an accepted piece passed the shell test
       accepted.push_back({ std::move(piece), z, run, score });
     }
   }

@@ -319,28 +319,15 @@ private:
 /// outside) — the region ITK's ConnectedThresholdImageFilter grows with face connectivity, marked
 /// in one bit per voxel instead of its full-size output and scratch images. Returns the marks and
 /// sets `box` to the region's bounding box grown by `pad` voxels (clipped to the image).
-/// Per slice k of the CT: the window's lower and upper HU (step 1b); empty: result's one window.
-struct SliceWindows
-{
-  std::vector<short> lower, upper;
-};
-
 VoxelBits GrowFromSeed(const CtImage& ct,
                        const SeedStatistics& stats,
                        const LumenSegmentation& result,
                        const std::array<long, 3>& pad,
-                       IndexBox& box,
-                       const SliceWindows& slices = {})
+                       IndexBox& box)
 {
-  const auto start = std::find_if(stats.voxels.begin(), stats.voxels.end(),
-                                  [&](const auto& index)
-                                  {
-                                    const short v = ct.GetPixel(index);
-                                    if (!slices.lower.empty())
-                                      return v >= slices.lower[static_cast<size_t>(index[2])] &&
-                                             v <= slices.upper[static_cast<size_t>(index[2])];
-                                    return v >= result.lowerHu && v <= result.upperHu;
-                                  });
+  const auto start = std::find_if(
+    stats.voxels.begin(), stats.voxels.end(),
+    [&](const auto& index) { return ct.GetPixel(index) >= result.lowerHu && ct.GetPixel(index) <= result.upperHu; });
   if (start == stats.voxels.end())
   {
     // Cannot happen: the median is one of the neighbourhood's values and lies in the window.
@@ -365,10 +352,7 @@ VoxelBits GrowFromSeed(const CtImage& ct,
   inRegion.Set(stack.back());
   const auto visit = [&](long flat)
   {
-    const long k = flat / slice;
-    const short lo = slices.lower.empty() ? lower : slices.lower[k],
-                up = slices.upper.empty() ? upper : slices.upper[k];
-    if (!inRegion.Test(flat) && hu[flat] >= lo && hu[flat] <= up &&
+    if (!inRegion.Test(flat) && hu[flat] >= lower && hu[flat] <= upper &&
         !besideCalcium(flat, flat % nx, (flat / nx) % ny, flat / slice))
     {
       inRegion.Set(flat);
@@ -397,100 +381,6 @@ VoxelBits GrowFromSeed(const CtImage& ct,
   }
   box = PaddedBox(lo, hi, pad, size);
   return inRegion;
-}
-
-/// Step 1b's window half-width at least this share of the slab's lumen level: 70 HU at 350 HU,
-/// what 3.5 σ of a 20 HU noise gives, and what the seed balls gave before step 1b (3 × 23–25 HU).
-constexpr double lumenHalfWindowFraction = 0.2;
-
-/// Deep voxels per slab, at least, for the slab's median to count.
-constexpr long minimumSlabVoxels = 200;
-/// The slabs' thickness along k, mm: a bolus changes the lumen's HU by up to ~10 HU/cm.
-constexpr double slabMm = 20.0;
-
-/// The grown region's deep voxels — every voxel within two steps in-plane and one slice
-/// through-plane inside the region, away from the partial-volume edge — in slabs `slabMm` thick
-/// along k, placed on the k axis's own physical coordinate (so a scan cut shorter keeps the
-/// same slabs): each slab's median (NaN: too few deep voxels), the overall median, and the noise σ
-/// (the median of the slabs' 1.4826 × MAD). Seeds anywhere in one lumen grow nearly the same region,
-/// so these are nearly the same for all of them, where the seed ball's 30–100 voxels move the
-/// median by a few HU with their noise and place.
-struct LumenLevels
-{
-  std::vector<double> sliceMedianHu; ///< per slice k: its slab's median, NaN where unknown
-  double medianHu = 0.0, sigmaHu = 0.0;
-  int slabs = 0;
-};
-
-LumenLevels MeasureGrownLumen(const CtImage& ct, const VoxelBits& inRegion, const IndexBox& box)
-{
-  const auto size = ct.GetLargestPossibleRegion().GetSize();
-  const long nx = long(size[0]), ny = long(size[1]), nz = long(size[2]), slice = nx * ny;
-  const short* hu = ct.GetBufferPointer();
-  // The physical position of slice k along its own axis: origin · d_k + k · spacing_k.
-  double origin = 0.0;
-  for (unsigned a = 0; a < 3; ++a)
-    origin += ct.GetOrigin()[a] * ct.GetDirection()[a][2];
-  const auto slabOf = [&](long k)
-  { return static_cast<long>(std::floor((origin + double(k) * ct.GetSpacing()[2]) / slabMm)); };
-  const std::array<long, 3> lo = box.first, hi{ box.first[0] + box.size[0] - 1, box.first[1] + box.size[1] - 1,
-                                                box.first[2] + box.size[2] - 1 };
-  LumenLevels levels;
-  levels.sliceMedianHu.assign(static_cast<size_t>(nz), std::numeric_limits<double>::quiet_NaN());
-  std::vector<double> all, slab, sigmas, medians;
-  long slabStart = std::max(lo[2], 1L);
-  const auto closeSlab = [&](long kEnd)
-  {
-    if (static_cast<long>(slab.size()) >= minimumSlabVoxels)
-    {
-      const double m = Median(slab);
-      for (double& v : slab)
-        v = std::abs(v - m);
-      sigmas.push_back(1.4826 * Median(slab));
-      medians.push_back(m);
-      for (long k = slabStart; k < kEnd; ++k)
-        levels.sliceMedianHu[static_cast<size_t>(k)] = m;
-    }
-    slab.clear();
-    slabStart = kEnd;
-  };
-  const long kFirst = std::max(lo[2], 1L), kLast = std::min(hi[2], nz - 2);
-  for (long k = kFirst; k <= kLast; ++k)
-  {
-    if (k > kFirst && slabOf(k) != slabOf(k - 1))
-      closeSlab(k);
-    for (long j = std::max(lo[1], 2L); j <= std::min(hi[1], ny - 3); ++j)
-      for (long i = std::max(lo[0], 2L); i <= std::min(hi[0], nx - 3); ++i)
-      {
-        const long f = i + nx * (j + ny * k);
-        if (inRegion.Test(f) && inRegion.Test(f - 1) && inRegion.Test(f + 1) && inRegion.Test(f - 2) &&
-            inRegion.Test(f + 2) && inRegion.Test(f - nx) && inRegion.Test(f + nx) && inRegion.Test(f - 2 * nx) &&
-            inRegion.Test(f + 2 * nx) && inRegion.Test(f - slice) && inRegion.Test(f + slice))
-        {
-          slab.push_back(hu[f]);
-          all.push_back(hu[f]);
-        }
-      }
-  }
-  closeSlab(kLast + 1);
-  levels.slabs = static_cast<int>(medians.size());
-  if (medians.empty())
-    return levels;
-  levels.medianHu = Median(medians);
-  levels.sigmaHu = Median(sigmas);
-  // Slices without a slab level take the nearest slab's (thin vessels only, or beyond the region).
-  std::vector<double>& m = levels.sliceMedianHu;
-  for (long k = 0, last = -1; k < nz; ++k)
-    if (!std::isnan(m[k]))
-    {
-      for (long q = last + 1; q < k; ++q)
-        m[q] = (last < 0 || k - q <= q - last) ? m[k] : m[last];
-      last = k;
-    }
-    else if (k == nz - 1 && last >= 0)
-      for (long q = last + 1; q < nz; ++q)
-        m[q] = m[last];
-  return levels;
 }
 
 /// The grown region's padded bounding box, with the region and the CT's HU copied into it: every
@@ -780,7 +670,7 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
   LumenSegmentation result;
 
   ReportProgress(progress, 0.0, "Estimating the HU window at the seed");
-  SeedStatistics stats = EstimateWindow(ct, seed, seedLps, params, result);
+  const SeedStatistics stats = EstimateWindow(ct, seed, seedLps, params, result);
 
   // The box every later step works in: the grown region padded by the opening, the boundary
   // refinement's reach and the tissue depth.
@@ -799,48 +689,7 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
   CroppedRegion crop;
   {
     IndexBox box;
-    VoxelBits grown = GrowFromSeed(ct, stats, result, pad, box);
-    if (params.thresholdMode == ThresholdMode::Auto && params.windowFromLumen)
-    {
-      // Step 1b: the window again, slab by slab from the grown lumen's own deep voxels, and the
-      // region grown once more with it (file comment): the plan no longer depends on where in the
-      // lumen the seed lies, and a bolus that fades down the body keeps each level's own window.
-      const LumenLevels lumen = MeasureGrownLumen(ct, grown, box);
-      if (lumen.slabs > 0)
-      {
-        SliceWindows windows;
-        double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
-        for (const double m : lumen.sliceMedianHu)
-        {
-          // The deep voxels' σ is the noise alone, where a seed ball's also holds some of the
-          // lumen's own variation (measured: 19 against 25 HU in one 20 HU-noise phantom); k σ of the
-          // noise alone cuts the partial-volume core of a 5–7 mm branch (an internal iliac) off, so
-          // the half-width is at least lumenHalfWindowFraction of the level.
-          const double half =
-            std::max({ params.windowSigmas * lumen.sigmaHu, params.minimumHalfWindowHu, lumenHalfWindowFraction * m });
-          windows.lower.push_back(ClampToShort(std::ceil(m - half)));
-          windows.upper.push_back(ClampToShort(std::floor(m + 2.0 * half)));
-          lowest = std::min(lowest, m - half);
-          highest = std::max(highest, m + 2.0 * half);
-        }
-        const CtImage::IndexType& seedVoxel = stats.voxels.front();
-        const short seedHu = ct.GetPixel(seedVoxel);
-        const size_t seedK = static_cast<size_t>(seedVoxel[2]);
-        if (seedHu >= windows.lower[seedK] && seedHu <= windows.upper[seedK])
-        {
-          result.lowerHu = lowest;
-          result.upperHu = highest;
-          result.calciumHu = highest + 0.25 * (highest - lowest);
-          stats.medianHu = lumen.medianHu;
-          stats.sigmaHu = lumen.sigmaHu;
-          result.windowSource += ", then slab by slab from the grown lumen's deep voxels (" +
-                                 std::to_string(lumen.slabs) + " slabs of 20 mm, median " +
-                                 FormatNumber(lumen.medianHu, 0) + " HU, noise sigma " +
-                                 FormatNumber(lumen.sigmaHu, 0) + " HU)";
-          grown = GrowFromSeed(ct, stats, result, pad, box, windows);
-        }
-      }
-    }
+    const VoxelBits grown = GrowFromSeed(ct, stats, result, pad, box);
     crop = CropToRegion(ct, grown, box);
   } // the marks are freed here: only the CT and box-sized buffers are held until the mask is pasted
   ReportProgress(progress, 0.4, "Cutting leaks");

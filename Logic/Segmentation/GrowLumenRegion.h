@@ -12,12 +12,6 @@
 ///     outside ±4 σ of the most homogeneous fifth of the lumen neighbourhoods within `seedSearchRadiusMm` (joined
 ///     to the seed by a straight line through lumen, so never across a wall or flap), the window
 ///     is taken from the nearest clean neighbourhood instead, with a warning naming it (Auto only).
-///     **1b.** (Auto, `windowFromLumen`) The region grown with that window gives the window again:
-///     the median and robust σ of its deep voxels (two voxels in-plane and one slice inside its
-///     edge; thousands where the ball had 30–100), and the region is grown once more with it. The
-///     seed ball's estimate moves with its noise sample and its place (2 mm slices: ±9 HU between
-///     two seeds in one phantom lumen, enough to move the renal arteries' ends and so the
-///     proximal site by 2 mm); the lumen's own is the same from any seed inside it (FindAorticSeed).
 ///     The window reaches further up than down: above the lumen lie only
 ///     brighter contrast, then calcium and cortical bone (> 700 HU); below it lie enhancing
 ///     kidney parenchyma (150–200 HU) and cancellous bone (200–300 HU).
@@ -96,14 +90,11 @@ struct RegionGrowingParams
 
   double seedNeighbourhoodRadiusMm = 2.5; ///< ball for the seed statistics, mm
   double seedSearchRadiusMm = 5.0;        ///< Auto: how far a cleaner neighbourhood is looked for, mm; 0 = never
-  /// Auto: after growing, the window again from the grown lumen's deep voxels and one more growth
-  /// with it (step 1b of the file comment); false keeps the seed neighbourhood's window.
-  bool windowFromLumen = false;
-  double minimumHalfWindowHu = 30.0; ///< floor of h for noise-free images, HU
-  double refineDistanceMm = 1.6;     ///< reach of the boundary refinement, mm
-  double tissueDepthMm = 5.0;        ///< where tissue is sampled outside the region, mm
-  double leakMinimumPieceMl = 10.0;  ///< smaller cut-off pieces are vessels and stay, mL
-  double darkLeakLimitMl = 5.0;      ///< dark interior volume that means a flood, mL
+  double minimumHalfWindowHu = 30.0;      ///< floor of h for noise-free images, HU
+  double refineDistanceMm = 1.6;          ///< reach of the boundary refinement, mm
+  double tissueDepthMm = 5.0;             ///< where tissue is sampled outside the region, mm
+  double leakMinimumPieceMl = 10.0;       ///< smaller cut-off pieces are vessels and stay, mL
+  double darkLeakLimitMl = 5.0;           ///< dark interior volume that means a flood, mL
 };
 
 /// Checks every range and cross-parameter rule of `params`.

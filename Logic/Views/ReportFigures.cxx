@@ -121,11 +121,7 @@ CrossSectionFigure Section(const RepairPlan& plan,
   f.level = level;
   const Point3 centre = PositionAt(vessel, level.abscissaMm);
   const Eigen::Vector3d t = TangentAt(vessel, level.abscissaMm);
-  Eigen::Vector3d u = Eigen::Vector3d::UnitX() - t.x() * t;
-  if (u.norm() < 0.5)
-    u = Eigen::Vector3d::UnitY() - t.y() * t;
-  u.normalize();
-  const Eigen::Vector3d w = u.cross(t);
+  const Eigen::Vector3d u = CoronalAxis(t), w = u.cross(t);
   const auto project = [&](const Point3& p) { return Eigen::Vector2d((p - centre).dot(u), (p - centre).dot(w)); };
 
   const OuterWallPlane* plane = v >= 0 ? plan.vesselWall.vessels[v].Nearest(level.abscissaMm) : nullptr;

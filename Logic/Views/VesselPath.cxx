@@ -41,6 +41,15 @@ double VesselPath::Project(const Point3& p, double* distanceMm) const
   return bestS;
 }
 
+Eigen::Vector3d CoronalAxis(const Eigen::Vector3d& t, const Eigen::Vector3d* previous)
+{
+  Eigen::Vector3d u = Eigen::Vector3d::UnitX() - t.x() * t;
+  if (u.norm() < 0.5)
+    u = previous ? Eigen::Vector3d(*previous - previous->dot(t) * t)
+                 : Eigen::Vector3d(Eigen::Vector3d::UnitY() - t.y() * t);
+  return u.normalized();
+}
+
 VesselPath SampleVesselPath(const Centerline& aorta, const Centerline& iliac, double stepMm)
 {
   if (aorta.Size() < 2 || iliac.Size() < 2)
@@ -92,15 +101,9 @@ VesselPath SampleVesselPath(const Centerline& aorta, const Centerline& iliac, do
     if (t.norm() < 1e-12)
       t = k > 0 ? path.tangent.row(k - 1).transpose() : Eigen::Vector3d(0, 0, -1);
     t.normalize();
-    Eigen::Vector3d u = Eigen::Vector3d::UnitX() - Eigen::Vector3d::UnitX().dot(t) * t;
-    if (u.norm() < 0.5 && k > 0)
-    {
-      const Eigen::Vector3d previous = path.u.row(k - 1).transpose();
-      u = previous - previous.dot(t) * t;
-    }
-    if (u.norm() < 1e-9) // the first sample runs along x: any axis ⟂ t
-      u = Eigen::Vector3d::UnitY() - Eigen::Vector3d::UnitY().dot(t) * t;
-    u.normalize();
+    const Eigen::Vector3d previous =
+      k > 0 ? Eigen::Vector3d(path.u.row(k - 1).transpose()) : Eigen::Vector3d(Eigen::Vector3d::Zero());
+    const Eigen::Vector3d u = CoronalAxis(t, k > 0 ? &previous : nullptr);
     path.tangent.row(k) = t.transpose();
     path.u.row(k) = u.transpose();
     path.v.row(k) = u.cross(t).transpose();

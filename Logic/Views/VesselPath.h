@@ -8,7 +8,7 @@
 /// the coronal plane wherever the vessel runs cranio-caudally or obliquely, as a surgeon reads a
 /// stretched view; v = u × t (posterior where t points inferior). Where the vessel runs within
 /// 30° of the left–right axis (|x ⟂ t| < 0.5) u is the previous sample's u made perpendicular to t
-/// (a rotation-minimising step), so the frame never flips.
+/// (a rotation-minimising step), so the frame never flips; at the first sample, LPS y ⟂ t.
 ///
 /// Abscissa: the sample k lies at k·stepMm along the path; the aorta's abscissa s is the path's
 /// s, an iliac abscissa s (from the bifurcation, as MeasureAnatomy gives it) is the path's
@@ -43,6 +43,10 @@ struct VesselPath
   /// distance from `p` to the path through `distanceMm` when given.
   double Project(const Point3& p, double* distanceMm = nullptr) const;
 };
+
+/// The frame's u for the unit tangent t (the file comment): LPS x ⟂ t, normalised; within 30° of
+/// the left–right axis `previous` ⟂ t, or LPS y ⟂ t without one. Also the cross-sections' axis.
+Eigen::Vector3d CoronalAxis(const Eigen::Vector3d& t, const Eigen::Vector3d* previous = nullptr);
 
 /// See the file comment.
 VesselPath SampleVesselPath(const Centerline& aorta, const Centerline& iliac, double stepMm);
