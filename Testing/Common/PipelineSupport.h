@@ -78,13 +78,14 @@ inline void FitAndMeasure(MeasuredPlan& plan,
 }
 
 /// Segmentation, centerlines, proximal site, stent mesh from the site, measure-mode fit, outer
-/// wall and measurements, with the CLI's default parameters.
+/// wall and measurements, with the CLI's default parameters (the region growing's may be given).
 inline MeasuredPlan MeasureFromCt(const CtImage& ct,
                                   const Point3& seedLps,
-                                  const std::optional<Point3>& lowestRenalOstiumLps = {})
+                                  const std::optional<Point3>& lowestRenalOstiumLps = {},
+                                  const RegionGrowingParams& growing = {})
 {
   MeasuredPlan plan;
-  const LumenSegmentation lumen = GrowLumenRegion(ct, seedLps, RegionGrowingParams{});
+  const LumenSegmentation lumen = GrowLumenRegion(ct, seedLps, growing);
   plan.lumen = lumen.mask;
   plan.tree = CenterlinesFromMask(*plan.lumen);
   plan.site = FindProximalSite(plan.tree, lowestRenalOstiumLps);

@@ -469,9 +469,13 @@ TEST_P(SeedBesideADisturbance, WindowAndLumenAsFromCleanLumen)
 {
   const auto ct = MakeTube(GetParam());
   const auto [seed, clean] = Seeds(GetParam());
-  const LumenSegmentation reference = GrowLumenRegion(*ct, clean, RegionGrowingParams{});
+  // Step 1's window (the seed's ball, or the nearest clean one) on its own (the default; step 1b,
+  // which replaces it by the lumen's own levels, is checked at the end).
+  RegionGrowingParams stepOne;
+  stepOne.windowFromLumen = false;
+  const LumenSegmentation reference = GrowLumenRegion(*ct, clean, stepOne);
   ASSERT_EQ(reference.windowSource, "the seed's neighbourhood");
-  const LumenSegmentation lumen = GrowLumenRegion(*ct, seed, RegionGrowingParams{});
+  const LumenSegmentation lumen = GrowLumenRegion(*ct, seed, stepOne);
   // The window of the lumen's own HU (350 ± 20): m within 5 HU and σ within ±33 % (two standard
   // errors of the robust σ of a 65-voxel ball, 17 %) put m − 3σ in [265, 315] and m + 6σ in
   // [425, 515]; wall, flap (40–60 HU) and plaque (900 HU) lie far outside either.
@@ -492,7 +496,7 @@ TEST_P(SeedBesideADisturbance, WindowAndLumenAsFromCleanLumen)
 
   // The case is a real one: from the seed's own ball the window is not the lumen's (what the
   // search is for).
-  RegionGrowingParams ownBall;
+  RegionGrowingParams ownBall = stepOne;
   ownBall.seedSearchRadiusMm = 0.0;
   try
   {
@@ -503,6 +507,27 @@ TEST_P(SeedBesideADisturbance, WindowAndLumenAsFromCleanLumen)
   {
     SUCCEED(); // a leak error from the seed's own ball: just as wrong
   }
+
+  // With step 1b the window comes from the lumen's core, wherever the seed lies in it: the same
+  // window and the same voxels from the disturbed seed as from the clean one. Not behind the flap:
+  // its half-lumens are 10 mm across, at the limit of a core 5 mm inside the edge, which one first
+  // window's region holds and the other's does not (README, "The automatic seed").
+  if (GetParam() == BesideTheSeed::Flap)
+    return;
+  RegionGrowingParams fromLumen;
+  fromLumen.windowFromLumen = true;
+  const LumenSegmentation cleanDefault = GrowLumenRegion(*ct, clean, fromLumen);
+  const LumenSegmentation disturbedDefault = GrowLumenRegion(*ct, seed, fromLumen);
+  EXPECT_NE(cleanDefault.windowSource.find("slab by slab from the lumen's core"), std::string::npos)
+    << cleanDefault.windowSource;
+  EXPECT_EQ(disturbedDefault.lowerHu, cleanDefault.lowerHu);
+  EXPECT_EQ(disturbedDefault.upperHu, cleanDefault.upperHu);
+  EXPECT_TRUE(lumenWindow(cleanDefault)) << cleanDefault.lowerHu << " to " << cleanDefault.upperHu;
+  long differ = 0;
+  const long n = static_cast<long>(ct->GetLargestPossibleRegion().GetNumberOfPixels());
+  for (long i = 0; i < n; ++i)
+    differ += cleanDefault.mask->GetBufferPointer()[i] != disturbedDefault.mask->GetBufferPointer()[i] ? 1 : 0;
+  EXPECT_EQ(differ, 0) << "voxels labelled differently from the two seeds";
 }
 
 INSTANTIATE_TEST_SUITE_P(GrowLumenRegion,
