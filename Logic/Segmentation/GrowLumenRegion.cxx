@@ -409,7 +409,7 @@ constexpr double lumenHalfWindowFraction = 0.2;
 /// of rounding as the region settles).
 constexpr int maximumLumenWindowPasses = 4;
 
-/// Deep voxels per slab, at least, for the slab's median to count.
+/// Core voxels per slab, at least, for the slab's median to count.
 constexpr long minimumSlabVoxels = 200;
 /// The slabs' thickness along k, mm: a bolus changes the lumen's HU by up to ~10 HU/cm.
 constexpr double slabMm = 20.0;
@@ -579,7 +579,7 @@ SliceWindows WindowsFromLevels(const LumenLevels& lumen,
   highest = -lowest;
   for (const double m : lumen.sliceMedianHu)
   {
-    // The deep voxels' σ is the noise alone, where a seed ball's also holds some of the lumen's own
+    // The core's σ is the noise alone, where a seed ball's also holds some of the lumen's own
     // variation (measured: 19 against 25 HU in one 20 HU-noise phantom); k σ of the noise alone
     // cuts the partial-volume core of a 5–7 mm branch (an internal iliac) off, so the half-width
     // is at least lumenHalfWindowFraction of the level.
