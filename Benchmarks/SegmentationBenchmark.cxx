@@ -1,6 +1,6 @@
 // Lumen segmentation of the 512 × 512 × 400 phantom. Target (foundation issue): under 2 s on the
-// project's 2-core machine, with the seed's window and with the lumen's (step 1b). Counters: voxels per second, Dice
-// against the truth, lumen mL.
+// project's 2-core machine, by default (the window from the lumen's core, step 1b) and with the seed's window alone.
+// Counters: voxels per second, Dice against the truth, lumen mL.
 #include <benchmark/benchmark.h>
 
 #include "LargePhantom.h"
@@ -26,13 +26,13 @@ void BM_GrowLumenRegion_512x512x400(benchmark::State& state)
 }
 BENCHMARK(BM_GrowLumenRegion_512x512x400)->Unit(benchmark::kMillisecond)->MinTime(3.0)->UseRealTime();
 
-/// The same with step 1b (windowFromLumen: the window from the lumen's core, slab by slab, the
-/// region grown again until it no longer changes), under the same 2 s target.
-void BM_GrowLumenRegionWindowFromLumen_512x512x400(benchmark::State& state)
+/// The same without step 1b (windowFromLumen off: the seed's window only, one growth), for the
+/// side-by-side table.
+void BM_GrowLumenRegionSeedsWindow_512x512x400(benchmark::State& state)
 {
   const sgp::AorticPhantom& phantom = sgp::benchmarks::LargePhantom();
   sgp::RegionGrowingParams params;
-  params.windowFromLumen = true;
+  params.windowFromLumen = false;
   sgp::LumenSegmentation lumen;
   for (auto _ : state)
   {
@@ -42,6 +42,6 @@ void BM_GrowLumenRegionWindowFromLumen_512x512x400(benchmark::State& state)
   state.counters["dice"] = sgp::testing::CompareWithTruth(*lumen.mask, *phantom.labels).Dice();
   state.counters["lumen_ml"] = lumen.volumeMl;
 }
-BENCHMARK(BM_GrowLumenRegionWindowFromLumen_512x512x400)->Unit(benchmark::kMillisecond)->MinTime(3.0)->UseRealTime();
+BENCHMARK(BM_GrowLumenRegionSeedsWindow_512x512x400)->Unit(benchmark::kMillisecond)->MinTime(3.0)->UseRealTime();
 
 } // namespace

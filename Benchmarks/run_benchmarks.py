@@ -40,9 +40,9 @@ def main():
 
     bench = os.path.join(build, "Benchmarks", "sgpBenchmarks")
     result = subprocess.run([bench, "--benchmark_format=json"], capture_output=True, text=True, check=True)
-    targets = {"BM_GrowLumenRegionWindowFromLumen": ("Segmentation with the lumen's own window (windowFromLumen), "
-                                                     "512x512x400 in memory", 2.0),
-               "BM_GrowLumenRegion": ("Segmentation, 512x512x400 in memory", 2.0),
+    targets = {"BM_GrowLumenRegionSeedsWindow": ("Segmentation with the seed's window alone (windowFromLumen off), "
+                                                 "512x512x400 in memory", 2.0),
+               "BM_GrowLumenRegion": ("Segmentation (the window from the lumen's core), 512x512x400 in memory", 2.0),
                "BM_ThinAndBuildGraph": ("Thinning + skeleton graph of that lumen", 1.0),
                "BM_LabelAortoIliacTree": ("Labelling the Y, smoothing the centerlines", None),
                "BM_WallStage": ("Wall stage (CT crop, outer wall of aorta and iliacs, two passes), 512x512x400 "

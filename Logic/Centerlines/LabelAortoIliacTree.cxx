@@ -81,6 +81,52 @@ Eigen::Vector3d BranchDirection(const SkeletonGraph& graph, int edge, int node, 
   return (last - origin).norm() > 0 ? Eigen::Vector3d((last - origin).normalized()) : Eigen::Vector3d::Zero();
 }
 
+/// How far a side branch must run outside its parent's wall before its direction is read, mm (as
+/// the renal axis of ProximalSite.h, which starts 1 mm outside the wall).
+constexpr double outsideParentStartMm = 1.0;
+
+/// The direction in which a side branch leaves its parent, for naming it (step 4): the chord of
+/// the branch's path (`branch`, from the junction outward) from its first point at least
+/// `outsideParentStartMm` outside the parent's wall — the distance to the nearest point of the
+/// parent's centerline past the parent's radius there — to `reach` mm further along it. The
+/// skeleton's junction lies on the parent's axis, and inside the parent the branch's skeleton
+/// follows the medial surface, which can run along the axis for a parent radius or more before
+/// it turns out (a 6 mm renal from an 18 mm neck: 11 mm up the axis, then level); the chord from
+/// the junction then points along the parent, not where the branch goes. `fromJunction` (the
+/// chord from the junction) when the path runs less than `reach`/4 outside the parent.
+Eigen::Vector3d DirectionOutsideParent(const std::vector<Point3>& branch,
+                                       const Centerline& parent,
+                                       double reach,
+                                       const Eigen::Vector3d& fromJunction)
+{
+  const auto outside = [&](const Point3& p)
+  {
+    double nearest = std::numeric_limits<double>::infinity(), radius = 0.0;
+    for (Eigen::Index i = 0; i < parent.Size(); ++i)
+    {
+      const double d = (p - parent.points.row(i).transpose()).norm();
+      if (d < nearest)
+        nearest = d, radius = parent.radiusMm[i];
+    }
+    return nearest - radius;
+  };
+  std::size_t start = 0;
+  while (start < branch.size() && outside(branch[start]) < outsideParentStartMm)
+    ++start;
+  if (start >= branch.size())
+    return fromJunction;
+  double s = 0.0;
+  Point3 last = branch[start];
+  for (std::size_t i = start + 1; i < branch.size() && s < reach; ++i)
+  {
+    s += (branch[i] - branch[i - 1]).norm();
+    last = branch[i];
+  }
+  if (s < reach / 4)
+    return fromJunction;
+  return (last - branch[start]).normalized();
+}
+
 /// Total length of vessel reachable through `edge` from `node` without passing `node` again.
 double ReachableLength(const SkeletonGraph& graph, int edge, int node)
 {
@@ -637,11 +683,18 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
   std::reverse(aortaRadii.begin(), aortaRadii.end());
   tree.aorta = Finish("aorta", aortaPoints, aortaRadii, params);
 
-  // The iliacs, each with its internal iliac.
-  const auto iliac = [&](int edge, const std::string& side, Centerline& out)
+  // The iliacs, each with its internal iliac. Both are followed first: a side edge of one that
+  // runs into the other or back into the aorta is a loop in the skeleton (across the crotch just
+  // below the bifurcation, where the two lumens merge), not a branch — followed as one, it led down
+  // the other iliac, was long enough and wide enough, and became an internal iliac 5–10 mm below
+  // the bifurcation, which left the stent's leg no room.
+  const VesselPath iliacPaths[2] = { FollowVessel(graph, y.node, y.right, mainNodes, reach),
+                                     FollowVessel(graph, y.node, y.left, mainNodes, reach) };
+  const auto iliac = [&](int index, int edge, const std::string& side, Centerline& out)
   {
-    std::set<int> blocked = mainNodes;
-    const VesselPath path = FollowVessel(graph, y.node, edge, blocked, reach);
+    const VesselPath& path = iliacPaths[index];
+    std::set<int> elsewhere(mainNodes);
+    elsewhere.insert(iliacPaths[1 - index].nodes.begin(), iliacPaths[1 - index].nodes.end());
     out = Finish(side + "Iliac", path.points, path.radii, params);
     const double commonRadius = BranchRadius(graph, edge, y.node, reach);
     bool internalFound = false;
@@ -651,6 +704,8 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
       {
         const VesselPath branch =
           FollowVessel(graph, junction.node, e, std::set<int>(path.nodes.begin(), path.nodes.end()), reach);
+        if (std::any_of(branch.nodes.begin() + 1, branch.nodes.end(), [&](int n) { return elsewhere.count(n) > 0; }))
+          continue; // a loop into the other iliac or the aorta
         const bool internal =
           !internalFound && ReachableLength(graph, e, junction.node) >= params.minimumBranchLengthMm / 2 &&
           BranchRadius(graph, e, junction.node, reach) >= params.internalIliacRadiusRatio * commonRadius;
@@ -663,8 +718,8 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
         tree.sideBranches.push_back(Finish(name, branch.points, branch.radii, params));
       }
   };
-  iliac(y.right, "right", tree.rightIliac);
-  iliac(y.left, "left", tree.leftIliac);
+  iliac(0, y.right, "right", tree.rightIliac);
+  iliac(1, y.left, "left", tree.leftIliac);
   if (y.Partial())
     MeasureIliacCoverage(graph, params, tree, y.cut);
 
@@ -674,6 +729,7 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
     {
       SideBranch side{ FollowVessel(graph, junction.node, e, mainNodes, reach), junction.node,
                        BranchDirection(graph, e, junction.node, reach), BranchRadius(graph, e, junction.node, reach) };
+      side.direction = DirectionOutsideParent(side.path.points, tree.aorta, reach, side.direction);
       if (junction.abscissa > topAbscissa + 1e-6)
         side.direction = Eigen::Vector3d::Zero(); // not abdominal: never a renal or visceral branch
       aorticSides.push_back(side);

@@ -41,8 +41,12 @@
 ///    The aorta runs from its top down to the bifurcation.
 /// 3. **The iliacs** are followed downward the same way; on each, the first side branch at
 ///    least `minimumBranchLengthMm`/2 long and `internalIliacRadiusRatio` × the common iliac's
-///    radius wide is the internal iliac, and its branching point is the iliac bifurcation.
-/// 4. **Side branches** of the aorta are named by the direction in which they leave it and their
+///    radius wide is the internal iliac, and its branching point is the iliac bifurcation. A side
+///    edge that leads into the other iliac or back into the aorta is a loop of the skeleton (across
+///    the crotch, where the two lumens merge), not a branch, and is left out.
+/// 4. **Side branches** of the aorta are named by the direction in which they leave it (the chord
+///    of the branch from 1 mm outside the aortic wall, `directionReachMm` long: inside the aorta
+///    the branch's skeleton can run along the aortic axis before it turns out) and their
 ///    height above the bifurcation: anterior (y < −0.6) between 30 and 250 mm → the lowest is the
 ///    superior mesenteric, the one above it the coeliac trunk; lateral (|x| ≥ 0.5, |x| ≥ |y|,
 ///    z ≤ 0.6) between 20 mm and 15 mm above the superior mesenteric (180 mm without it) → the

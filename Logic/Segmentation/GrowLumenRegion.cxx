@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <utility>
 
@@ -84,10 +85,11 @@ SeedStatistics MeasureSeedNeighbourhood(const CtImage& ct,
   return stats;
 }
 
-/// Median HU `depth[axis]` voxels outside the region, sampled along the axes from its boundary.
-double MeasureTissueHu(const MaskGrid& mask, const std::vector<short>& hu, const std::array<long, 3>& depth)
+/// Calls `f(k, hu)` for each tissue sample: the voxel `depth[axis]` voxels outside the region
+/// along an axis from each boundary face (k: the sample's slice in the crop).
+template<class F>
+void ForEachTissueSample(const MaskGrid& mask, const std::vector<short>& hu, const std::array<long, 3>& depth, F&& f)
 {
-  std::vector<double> samples;
   for (long flat = 0; flat < mask.Count(); ++flat)
   {
     if (!mask.voxels[flat])
@@ -110,11 +112,18 @@ double MeasureTissueHu(const MaskGrid& mask, const std::vector<short>& hu, const
         const long farFlat = mask.Flat(far[0], far[1], far[2]);
         if (!mask.voxels[farFlat])
         {
-          samples.push_back(hu[farFlat]);
+          f(far[2], hu[farFlat]);
         }
       }
     }
   }
+}
+
+/// Median HU `depth[axis]` voxels outside the region, sampled along the axes from its boundary.
+double MeasureTissueHu(const MaskGrid& mask, const std::vector<short>& hu, const std::array<long, 3>& depth)
+{
+  std::vector<double> samples;
+  ForEachTissueSample(mask, hu, depth, [&](long, short v) { samples.push_back(v); });
   return samples.empty() ? std::numeric_limits<double>::quiet_NaN() : Median(samples);
 }
 
@@ -406,8 +415,17 @@ constexpr double lumenHalfWindowFraction = 0.2;
 
 /// Step 1b's growths at most: on the automatic-seed tests' 27 phantoms the windows stop changing
 /// after one to three (the first moves them from the seed ball's estimate, the rest by an HU or two
-/// of rounding as the region settles).
-constexpr int maximumLumenWindowPasses = 4;
+/// of rounding as the region settles), or fall into a cycle of two (below).
+constexpr int maximumLumenWindowPasses = 6;
+
+/// The sum of a window's widths over its slices (HU): of the windows of a cycle the narrowest wins.
+long TotalWidth(const SliceWindows& w)
+{
+  long total = 0;
+  for (std::size_t k = 0; k < w.lower.size(); ++k)
+    total += long(w.upper[k]) - long(w.lower[k]);
+  return total;
+}
 
 /// Core voxels per slab, at least, for the slab's median to count.
 constexpr long minimumSlabVoxels = 200;
@@ -434,21 +452,33 @@ constexpr double lumenCoreBlockMm = 2.0;
 MaskGrid LumenCore(const CtImage& ct, const MaskGrid& region, const IndexBox& box, const CtImage::IndexType& seed)
 {
   const auto spacing = ct.GetSpacing();
-  std::array<long, 3> block{}, coarseSize{};
+  // The blocks lie on a grid fixed in space (voxel g along axis a, counted from the physical
+  // origin of that axis, is in block floor(g / block)), not on the region's box: a scan cut lower,
+  // or a region a little wider, then has the same blocks, so the same core where the lumen is the
+  // same.
+  const auto floorDiv = [](long a, long b) { return a >= 0 ? a / b : -((-a + b - 1) / b); };
+  std::array<long, 3> block{}, coarseSize{}, shift{}, firstBlock{};
   std::array<double, 3> coarseSpacing{};
   for (unsigned a = 0; a < 3; ++a)
   {
     block[a] = std::max(1L, static_cast<long>(std::floor(lumenCoreBlockMm / spacing[a] + 1e-9)));
-    coarseSize[a] = (region.size[a] + block[a] - 1) / block[a];
+    double along = 0.0; // the image origin's position along axis a, mm
+    for (unsigned b = 0; b < 3; ++b)
+      along += ct.GetOrigin()[b] * ct.GetDirection()[b][a];
+    shift[a] = static_cast<long>(std::lround(along / spacing[a])) + box.first[a];
+    firstBlock[a] = floorDiv(shift[a], block[a]);
+    coarseSize[a] = floorDiv(shift[a] + region.size[a] - 1, block[a]) - firstBlock[a] + 1;
     coarseSpacing[a] = double(block[a]) * spacing[a];
   }
+  // The block of crop voxel i along axis a.
+  const auto blockOf = [&](unsigned a, long i) { return floorDiv(shift[a] + i, block[a]) - firstBlock[a]; };
   MaskGrid coarse(coarseSize);
   std::vector<int> inside(static_cast<size_t>(coarse.Count()), 0), total(inside.size(), 0);
   for (long k = 0; k < region.size[2]; ++k)
     for (long j = 0; j < region.size[1]; ++j)
       for (long i = 0; i < region.size[0]; ++i)
       {
-        const size_t c = static_cast<size_t>(coarse.Flat(i / block[0], j / block[1], k / block[2]));
+        const size_t c = static_cast<size_t>(coarse.Flat(blockOf(0, i), blockOf(1, j), blockOf(2, k)));
         ++total[c];
         inside[c] += region.voxels[region.Flat(i, j, k)];
       }
@@ -468,8 +498,8 @@ MaskGrid LumenCore(const CtImage& ct, const MaskGrid& region, const IndexBox& bo
     double d2 = 0.0;
     for (unsigned a = 0; a < 3; ++a)
     {
-      const double d =
-        (double(box.first[a] + ijk[a] * block[a]) + 0.5 * double(block[a] - 1) - double(seed[a])) * spacing[a];
+      const long firstVoxel = (firstBlock[a] + ijk[a]) * block[a] - shift[a] + box.first[a]; // CT index
+      const double d = (double(firstVoxel) + 0.5 * double(block[a] - 1) - double(seed[a])) * spacing[a];
       d2 += d * d;
     }
     if (d2 < nearestMm2)
@@ -487,7 +517,7 @@ MaskGrid LumenCore(const CtImage& ct, const MaskGrid& region, const IndexBox& bo
       for (long i = 0; i < region.size[0]; ++i)
       {
         const long f = region.Flat(i, j, k);
-        core.voxels[f] = region.voxels[f] && piece.voxels[piece.Flat(i / block[0], j / block[1], k / block[2])];
+        core.voxels[f] = region.voxels[f] && piece.voxels[piece.Flat(blockOf(0, i), blockOf(1, j), blockOf(2, k))];
       }
   return core;
 }
@@ -505,6 +535,16 @@ struct LumenLevels
   int slabs = 0;
 };
 
+/// The slab (slabMm thick, at fixed heights along k) that CT slice k lies in: its physical
+/// position along its own axis, origin · d_k + k · spacing_k, over slabMm, rounded down.
+long SlabOfSlice(const CtImage& ct, long k)
+{
+  double origin = 0.0;
+  for (unsigned a = 0; a < 3; ++a)
+    origin += ct.GetOrigin()[a] * ct.GetDirection()[a][2];
+  return static_cast<long>(std::floor((origin + double(k) * ct.GetSpacing()[2]) / slabMm));
+}
+
 LumenLevels MeasureLumenLevels(const CtImage& ct,
                                const MaskGrid& core,
                                const std::vector<short>& hu,
@@ -512,12 +552,7 @@ LumenLevels MeasureLumenLevels(const CtImage& ct,
 {
   const long nz = static_cast<long>(ct.GetLargestPossibleRegion().GetSize()[2]);
   const long bx = core.size[0], by = core.size[1], bz = core.size[2];
-  // The physical position of slice k along its own axis: origin · d_k + k · spacing_k.
-  double origin = 0.0;
-  for (unsigned a = 0; a < 3; ++a)
-    origin += ct.GetOrigin()[a] * ct.GetDirection()[a][2];
-  const auto slabOf = [&](long k)
-  { return static_cast<long>(std::floor((origin + double(k) * ct.GetSpacing()[2]) / slabMm)); };
+  const auto slabOf = [&](long k) { return SlabOfSlice(ct, k); };
   LumenLevels levels;
   levels.sliceMedianHu.assign(static_cast<size_t>(nz), std::numeric_limits<double>::quiet_NaN());
   std::vector<double> slab, sigmas, medians;
@@ -774,15 +809,54 @@ void CheckForDarkFlood(const CutRegion& region,
   }
 }
 
-/// Steps 5 and 6: the boundary moved to the half-maximum edge level, then pits and holes filled.
+/// Step 5's edge level on each slice of the crop (`firstSlice` its first CT slice): half-way
+/// between the lumen and the tissue around it. Without step 1b's levels (`sliceLevelHu` empty) one
+/// level, the seed's median and the tissue median around the whole region. With them each slice's
+/// own: its slab's lumen level, and the tissue median of its slab's samples (MeasureTissueHu's
+/// samples on that slab's slices, when at least minimumSlabVoxels), else the whole region's; so a
+/// bolus fading down the body keeps each level's half-maximum, and what lies around the lumen far
+/// from a level — a heart in view 70 mm above the renal arteries, a scan cut lower — does not move
+/// its edge.
+std::vector<double> EdgeLevels(const CtImage& ct,
+                               const MaskGrid& mask,
+                               const std::vector<short>& hu,
+                               const std::array<long, 3>& depth,
+                               long firstSlice,
+                               const std::vector<double>& sliceLevelHu,
+                               double medianHu,
+                               double tissueHu)
+{
+  const long nz = mask.size[2];
+  std::vector<double> edge(static_cast<std::size_t>(nz), 0.5 * (medianHu + tissueHu));
+  if (sliceLevelHu.empty())
+    return edge;
+  std::map<long, std::vector<double>> samples; // by slab
+  ForEachTissueSample(mask, hu, depth, [&](long k, short v) { samples[SlabOfSlice(ct, firstSlice + k)].push_back(v); });
+  std::map<long, double> tissue;
+  for (auto& [slab, values] : samples)
+    if (static_cast<long>(values.size()) >= minimumSlabVoxels)
+      tissue[slab] = Median(values);
+  for (long k = 0; k < nz; ++k)
+  {
+    const long image = firstSlice + k;
+    if (image < 0 || image >= static_cast<long>(sliceLevelHu.size()))
+      continue;
+    const auto t = tissue.find(SlabOfSlice(ct, image));
+    edge[static_cast<std::size_t>(k)] =
+      0.5 * (sliceLevelHu[static_cast<std::size_t>(image)] + (t != tissue.end() ? t->second : tissueHu));
+  }
+  return edge;
+}
+
+/// Steps 5 and 6: the boundary moved to the half-maximum edge level, `edge[k]` on crop slice k
+/// (EdgeLevels), then pits and holes filled.
 void RefineBoundary(MaskGrid& lumen,
                     const std::vector<short>& hu,
                     int refineSteps,
                     const std::vector<std::array<int, 3>>& reachBall,
-                    const SeedStatistics& stats,
+                    const std::vector<double>& edge,
                     LumenSegmentation& result)
 {
-  result.edgeHu = 0.5 * (stats.medianHu + result.tissueHu);
   std::vector<bool> accept(static_cast<std::size_t>(lumen.Count()));
   const long nx = lumen.size[0], ny = lumen.size[1], nz = lumen.size[2], slice = nx * ny;
   // Within refineDistanceMm of the grown region in millimetres, on every axis: counted in face
@@ -803,7 +877,8 @@ void RefineBoundary(MaskGrid& lumen,
   };
   for (long flat = 0; flat < lumen.Count(); ++flat)
   {
-    accept[flat] = !lumen.voxels[flat] && hu[flat] >= result.edgeHu && hu[flat] <= result.upperHu && withinReach(flat);
+    accept[flat] = !lumen.voxels[flat] && hu[flat] >= edge[static_cast<std::size_t>(flat / slice)] &&
+                   hu[flat] <= result.upperHu && withinReach(flat);
   }
   // Not into a calcium's or bone's blurred rim either (as GrowFromSeed).
   for (long flat = 0; flat < lumen.Count(); ++flat)
@@ -897,6 +972,7 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
 
   ReportProgress(progress, 0.05, "Region growing");
   CroppedRegion crop;
+  std::vector<double> sliceLevelHu; // step 1b's levels slice by slice, when it ran
   {
     IndexBox box;
     const VoxelBits grown = GrowFromSeed(ct, stats, result, pad, box);
@@ -909,36 +985,72 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
     // where in the lumen the seed lies, and a bolus that fades down the body keeps each level's
     // own window. The core needs no leak cutting: a leak joins through a bridge thinner than it.
     ReportProgress(progress, 0.2, "Estimating the HU window from the lumen");
-    SliceWindows previous;
-    std::string source;
+    // Each growth's windows and what they came from. Integer HU make the core's σ move in steps
+    // of 1.48 HU (its MAD is a whole or half HU), and a window's edge that takes a kidney at 230 HU
+    // in or out moves the core's σ by one such step: the windows can alternate between two values,
+    // and then which of them the last growth used depended on where the seed started. A window
+    // met again ends the loop on the narrowest of the cycle, the same from every start.
+    struct Growth
+    {
+      SliceWindows windows;
+      LumenLevels lumen;
+      double lowest = 0.0, highest = 0.0;
+    };
+    std::vector<Growth> growths;
+    const CtImage::IndexType& seedVoxel = stats.voxels.front();
+    const short seedHu = ct.GetPixel(seedVoxel);
+    const size_t seedK = static_cast<size_t>(seedVoxel[2]);
+    const auto grow = [&](const Growth& g)
+    {
+      result.lowerHu = g.lowest; // GrowFromSeed's start voxel and calcium level
+      result.upperHu = g.highest;
+      result.calciumHu = g.highest + 0.25 * (g.highest - g.lowest);
+      IndexBox box;
+      const VoxelBits grown = GrowFromSeed(ct, stats, result, pad, box, g.windows);
+      crop = CropToRegion(ct, grown, box);
+    };
     for (int pass = 0; pass < maximumLumenWindowPasses; ++pass)
     {
-      const LumenLevels lumen =
-        MeasureLumenLevels(ct, LumenCore(ct, crop.region, crop.box, stats.voxels.front()), crop.hu, crop.box);
-      if (lumen.slabs == 0)
+      Growth next;
+      next.lumen = MeasureLumenLevels(ct, LumenCore(ct, crop.region, crop.box, seedVoxel), crop.hu, crop.box);
+      if (next.lumen.slabs == 0)
         break; // no core: a lumen of small vessels only; the seed's window stays
-      double lowest = 0.0, highest = 0.0;
-      SliceWindows windows = WindowsFromLevels(lumen, params, lowest, highest);
-      if (windows.lower == previous.lower && windows.upper == previous.upper)
+      next.windows = WindowsFromLevels(next.lumen, params, next.lowest, next.highest);
+      const auto same = [&](const Growth& g)
+      { return g.windows.lower == next.windows.lower && g.windows.upper == next.windows.upper; };
+      if (!growths.empty() && same(growths.back()))
         break; // the fixed point: growing again gives the same region
-      const CtImage::IndexType& seedVoxel = stats.voxels.front();
-      const short seedHu = ct.GetPixel(seedVoxel);
-      const size_t seedK = static_cast<size_t>(seedVoxel[2]);
-      if (seedHu < windows.lower[seedK] || seedHu > windows.upper[seedK])
+      const auto met = std::find_if(growths.begin(), growths.end(), same);
+      if (met != growths.end())
+      {
+        const auto narrowest = std::min_element(met, growths.end(),
+                                                [](const Growth& x, const Growth& y)
+                                                { return TotalWidth(x.windows) < TotalWidth(y.windows); });
+        if (narrowest != growths.end() - 1)
+        {
+          Growth chosen = *narrowest;
+          grow(chosen);
+          growths.push_back(std::move(chosen));
+        }
+        break;
+      }
+      if (seedHu < next.windows.lower[seedK] || seedHu > next.windows.upper[seedK])
         break; // the seed's voxel is not lumen by the lumen's own levels: keep what it grew
-      result.lowerHu = lowest;
-      result.upperHu = highest;
-      result.calciumHu = highest + 0.25 * (highest - lowest);
-      stats.medianHu = lumen.medianHu;
-      stats.sigmaHu = lumen.sigmaHu;
-      source = ", then slab by slab from the lumen's core (" + std::to_string(lumen.slabs) + " slabs of 20 mm, " +
-               FormatNumber(lumenCoreDepthMm, 0) + " mm inside its edge, median " + FormatNumber(lumen.medianHu, 0) +
-               " HU, noise sigma " + FormatNumber(lumen.sigmaHu, 0) + " HU; " + std::to_string(pass + 1) +
-               (pass == 0 ? " growth)" : " growths)");
-      IndexBox box;
-      const VoxelBits grown = GrowFromSeed(ct, stats, result, pad, box, windows);
-      crop = CropToRegion(ct, grown, box);
-      previous = std::move(windows);
+      grow(next);
+      growths.push_back(std::move(next));
+    }
+    std::string source;
+    if (!growths.empty())
+    {
+      const Growth& last = growths.back();
+      stats.medianHu = last.lumen.medianHu;
+      stats.sigmaHu = last.lumen.sigmaHu;
+      sliceLevelHu = last.lumen.sliceMedianHu;
+      const std::size_t n = growths.size();
+      source = ", then slab by slab from the lumen's core (" + std::to_string(last.lumen.slabs) + " slabs of 20 mm, " +
+               FormatNumber(lumenCoreDepthMm, 0) + " mm inside its edge, median " +
+               FormatNumber(last.lumen.medianHu, 0) + " HU, noise sigma " + FormatNumber(last.lumen.sigmaHu, 0) +
+               " HU; " + std::to_string(n) + (n == 1 ? " growth)" : " growths)");
     }
     result.windowSource += source;
   }
@@ -949,7 +1061,10 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
   CheckForDarkFlood(region, crop.hu, tissueDepth, stats, params, voxelMl, result);
 
   ReportProgress(progress, 0.7, "Refining the boundary");
-  RefineBoundary(region.lumen, crop.hu, refineSteps, PhysicalBall(spacing, params.refineDistanceMm), stats, result);
+  result.edgeHu = 0.5 * (stats.medianHu + result.tissueHu);
+  const std::vector<double> edge = EdgeLevels(ct, region.lumen, crop.hu, tissueDepth, crop.box.first[2], sliceLevelHu,
+                                              stats.medianHu, result.tissueHu);
+  RefineBoundary(region.lumen, crop.hu, refineSteps, PhysicalBall(spacing, params.refineDistanceMm), edge, result);
 
   result.volumeMl = region.lumen.CountForeground() * voxelMl;
   if (result.volumeMl > params.maximumLumenVolumeMl)

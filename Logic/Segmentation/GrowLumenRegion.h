@@ -12,16 +12,20 @@
 ///     outside ±4 σ of the most homogeneous fifth of the lumen neighbourhoods within `seedSearchRadiusMm` (joined
 ///     to the seed by a straight line through lumen, so never across a wall or flap), the window
 ///     is taken from the nearest clean neighbourhood instead, with a warning naming it (Auto only).
-///     **1b.** (Auto, `windowFromLumen`, off by default) The region grown with that window gives
+///     **1b.** (Auto, `windowFromLumen`, the default) The region grown with that window gives
 ///     the window again, slab by slab (20 mm along k): the median and robust σ of the lumen's core
 ///     — its voxels at least 5 mm inside its edge, found on 2 mm blocks, in the piece nearest the
 ///     seed, so a kidney joined through a renal artery does not count — with a half-width of
 ///     max(k σ, `minimumHalfWindowHu`, 0.2 × the slab's median), and the region is grown again until
-///     the windows no longer change (at most four growths). The seed ball's estimate moves with its
+///     the windows no longer change (at most six growths; windows met again — a cycle, since whole
+///     HU move the core's σ in steps of 1.48 HU — end it on the cycle's narrowest, the same from any
+///     start). The seed ball's estimate moves with its
 ///     noise sample and its place (a bolus gradient, a thick slice, a ball of 30–100 voxels); the
 ///     lumen's own is the same from any seed inside it: the plan from FindAorticSeed's seed then
-///     equals the plan from any other seed in the aorta. Not the default yet: README, "The
-///     automatic seed", lists what it changes.
+///     equals the plan from any other seed in the aorta. The blocks lie on a grid fixed in space
+///     and the slabs at fixed heights, so a scan cut lower keeps the others' levels; step 5's edge
+///     is then each slice's own: half-way between its slab's lumen level and the tissue median of
+///     its slab (the whole region's where the slab has fewer than 200 samples).
 ///     The window reaches further up than down: above the lumen lie only
 ///     brighter contrast, then calcium and cortical bone (> 700 HU); below it lie enhancing
 ///     kidney parenchyma (150–200 HU) and cancellous bone (200–300 HU).
@@ -43,7 +47,8 @@
 ///     homogeneous. More than `darkLeakLimitMl` of voxels there darker than
 ///     tissue + 0.7·(m − tissue) means the region flooded a tissue of another class (kidney,
 ///     bowel, marrow): AlgorithmError. So does a lumen over `maximumLumenVolumeMl`.
-///  5. **Boundary refinement.** The boundary is moved to the half-maximum between lumen (m) and the
+///  5. **Boundary refinement.** The boundary is moved to the half-maximum between lumen (m; with
+///     step 1b the slice's slab level) and the
 ///     surrounding tissue (median HU `tissueDepthMm` outside the region, beyond the blur of the edge): neighbours
 ///     within `refineDistanceMm` (millimetres on every axis, an ellipsoid of voxels on the grid) with HU in
 ///     [edge, upper], not beside calcium, are added; this undoes the conservative lower threshold without reaching
@@ -101,8 +106,9 @@ struct RegionGrowingParams
   double seedNeighbourhoodRadiusMm = 2.5; ///< ball for the seed statistics, mm
   double seedSearchRadiusMm = 5.0;        ///< Auto: how far a cleaner neighbourhood is looked for, mm; 0 = never
   /// Auto: after growing, the window again from the lumen's core, slab by slab, until it no longer
-  /// changes (step 1b of the file comment); false keeps the seed neighbourhood's window.
-  bool windowFromLumen = false;
+  /// changes (step 1b of the file comment); false keeps the seed neighbourhood's window (and one
+  /// edge level for every slice).
+  bool windowFromLumen = true;
   double minimumHalfWindowHu = 30.0; ///< floor of h for noise-free images, HU
   double refineDistanceMm = 1.6;     ///< reach of the boundary refinement, mm
   double tissueDepthMm = 5.0;        ///< where tissue is sampled outside the region, mm

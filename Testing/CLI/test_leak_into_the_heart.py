@@ -102,10 +102,11 @@ def main():
     seed_at_coeliac = "0,0,%g" % (coeliac_z + 5)  # in the aorta (on its axis, x = y = 0)
 
     # Whether the skeleton meets in one junction with the shape of a Y depends on the noise: of noise
-    # draws 0-5, draws 3 and 4 gave it (named a Y before the plausibility rules), the others a
-    # skeleton without one. Both kinds are run; each must be one clean error, and the first two
+    # draws 0-7, draws 0, 1, 2, 4 and 6 give it (named a Y before the plausibility rules; with the
+    # seed's window alone, before the window came from the lumen's core, draws 3 and 4), the others
+    # a skeleton without one. Both kinds are run; each must be one clean error, and the first two
     # must name the junction refused.
-    for noise_seed, refused in ((3, True), (4, True), (5, False)):
+    for noise_seed, refused in ((2, True), (4, True), (5, False)):
         chest = os.path.join(workdir, "heart-and-venae-cavae.nrrd")
         paint_heart(phantom, chest, with_vena_cava=True, noise_seed=noise_seed)
         ending_at_coeliac = os.path.join(workdir, "ending-at-the-coeliac-%d.nrrd" % noise_seed)
@@ -115,8 +116,8 @@ def main():
             needles.append("has the shape of a Y, but")
         bad_case(cli, workdir, "ends-at-coeliac-noise-%d-whole-plan" % noise_seed, ending_at_coeliac,
                  ["--seed", seed_at_coeliac, "--outputStentModel", "{outdir}/stent.vtp"], needles)
-        if noise_seed == 3:
-            bad_case(cli, workdir, "ends-at-coeliac-noise-3-centerlines-only", ending_at_coeliac,
+        if noise_seed == 2:
+            bad_case(cli, workdir, "ends-at-coeliac-noise-2-centerlines-only", ending_at_coeliac,
                      ["--seed", seed_at_coeliac, "--outputCenterlines", "{outdir}/centerlines.vtp"], needles)
 
     # The whole abdomen in view, an arterial phase (no contrast in the vena cava): the real Y.
@@ -130,18 +131,17 @@ def main():
         if result.returncode == 0:
             values[label] = sem_rules.read_return_parameters(os.path.join(outdir, "ret.params"))
     if len(values) == 2:
-        for name, tolerance in (("proximalNeckLumenDiameter", 0.5), ("neckLumenDiameter15mm", 0.5),
-                                ("maxAneurysmLumenDiameter", 0.5), ("distalNeckMinLumenDiameter", 0.5),
-                                ("proximalNeckLength", 0.5), ("proximalSiteToBifurcationLength", 0.6),
-                                ("rightIliacLength", 2.0), ("leftIliacLength", 2.0)):
+        for name in ("proximalNeckLumenDiameter", "neckLumenDiameter15mm", "maxAneurysmLumenDiameter",
+                     "distalNeckMinLumenDiameter", "proximalNeckLength", "proximalSiteToBifurcationLength",
+                     "rightIliacLength", "leftIliacLength"):
             plain, with_heart = float(values["plain"][name]), float(values["heart"][name])
-            # The same lumen below the renal arteries: the values agree to the centerline's
-            # resampling and smoothing (0.5 mm). The boundary level (half-way to the tissue HU
-            # sampled around the whole lumen) moves a little with the heart's surroundings, and the
-            # iliac lengths end where the skeleton ends in the vessels' rounded caps, which moves by
-            # up to two voxels with it (2 mm). The site-to-bifurcation length adds the site's move
-            # with the renal's skeleton (0.23 mm measured here, both sites within 0.3 mm of the
-            # truth's) to the path's: 0.53 mm measured, so 0.6.
+            # The same lumen below the renal arteries: each slice's boundary level lies half-way
+            # between its own slab's lumen and the tissue around the lumen in that slab (20 mm
+            # slabs), so the heart 70 mm above the renals moves nothing below them (measured: at
+            # most 0.006 mm, on the site-to-bifurcation length; with one tissue level for the whole
+            # lumen it moved the boundary level by 3 HU, the site-to-bifurcation length by 0.53-0.69
+            # mm and the iliac lengths by up to 0.6 mm). 0.1 mm: a tenth of the centerline's step.
+            tolerance = 0.1
             check(plain > 0 and abs(with_heart - plain) <= tolerance,
                   f"heart in view: {name} as without it (within {tolerance} mm)", f"{with_heart} vs {plain}")
 

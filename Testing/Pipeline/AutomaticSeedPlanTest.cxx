@@ -1,9 +1,9 @@
 // The plan from the automatic seed equals the plan from the truth's seed (issue 16 item 1: within
-// 0.2 mm on (a)–(f)): with the lumen's own window (step 1b of GrowLumenRegion, windowFromLumen) on
-// every phantom the seed tests generate — rotated and flipped grids, bone and kidneys, thick
-// slices, a wall in fat with thrombus, calcium, a bolus gradient, and random anatomies over the
-// sweep's ranges; with the default window on three of them. The return values say which seed was
-// used.
+// 0.2 mm on (a)–(f)) on every phantom the seed tests generate — rotated and flipped grids, bone and
+// kidneys, thick slices, a wall in fat with thrombus, calcium, a bolus gradient, and random
+// anatomies over the sweep's ranges — with the default region growing, whose window is the
+// lumen's own (step 1b of GrowLumenRegion, windowFromLumen); with the seed's window alone
+// (windowFromLumen off) on three of them. The return values say which seed was used.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -112,20 +112,21 @@ int ExpectSamePlan(const testing::SeedPhantom& variant, const PlanParams& params
   return 0;
 }
 
-/// The plan's parameters with step 1b of the region growing (GrowLumenRegion.h): the window from
-/// the lumen's own core, the same from any seed in it.
-PlanParams WithWindowFromLumen()
+/// The plan's parameters with the region growing's window from the seed's ball alone (step 1b of
+/// GrowLumenRegion.h off).
+PlanParams WithTheSeedsWindow()
 {
   PlanParams params;
-  params.growing.windowFromLumen = true;
+  params.growing.windowFromLumen = false;
   return params;
 }
 
-TEST(AutomaticSeed, DefaultWindow_SamePlanOnThreePhantoms)
+TEST(AutomaticSeed, SeedsWindow_SamePlanOnThreePhantoms)
 {
-  // With the default window (the seed's ball) the two seeds' windows differ by their noise
-  // samples; on these three the plans still agree within the bound. Not the class: the lumen
-  // window's tests below are (README, "The automatic seed").
+  // With the seed's ball's window alone the two seeds' windows differ by their noise samples; on
+  // these three the plans still agree within the bound, on two of the seven named phantoms they
+  // did not (3.1 and 5.0 mm: README, "The automatic seed"). Not the class: the default's tests
+  // below are.
   PhantomParams oblique;
   oblique.directionLps = testing::ObliqueFlippedDirection();
   oblique.includeBone = true;
@@ -138,28 +139,30 @@ TEST(AutomaticSeed, DefaultWindow_SamePlanOnThreePhantoms)
   for (const testing::SeedPhantom& v : { testing::SeedPhantom{ "default", PhantomParams{} },
                                          testing::SeedPhantom{ "oblique flipped grid, bone and kidneys", oblique },
                                          testing::SeedPhantom{ "wall in fat, 2 mm slices, thrombus", thick } })
-    stopped += ExpectSamePlan(v, PlanParams{});
+    stopped += ExpectSamePlan(v, WithTheSeedsWindow());
   EXPECT_EQ(stopped, 0);
 }
 
-TEST(AutomaticSeed, WindowFromLumen_EveryTestPhantom_SamePlanAsTheTruthsSeed)
+TEST(AutomaticSeed, EveryTestPhantom_SamePlanAsTheTruthsSeed)
 {
   int stopped = 0;
   for (const testing::SeedPhantom& v : testing::SeedTestPhantoms())
-    stopped += ExpectSamePlan(v, WithWindowFromLumen());
+    stopped += ExpectSamePlan(v, PlanParams{});
   EXPECT_EQ(stopped, 0) << "every named phantom is planned";
 }
 
-TEST(AutomaticSeed, WindowFromLumen_RandomAnatomies_SamePlanAsTheTruthsSeed)
+TEST(AutomaticSeed, RandomAnatomies_SamePlanAsTheTruthsSeed)
 {
-  // The 20 draws the seed finder's test uses. Two of them (draws 10 and 14: a right internal
-  // iliac origin found within a few mm of the bifurcation, so the leg has no room for two rings)
-  // stop in the stent stage from either seed — noticed here, not this issue's class — and are
-  // compared by their error; the others are planned.
+  // The 20 draws the seed finder's test uses. One of them (draw 14: 31 HU noise, a spur of the
+  // skeleton 8 mm below the bifurcation taken for the left internal iliac, so the leg has no room
+  // for two rings) stops in the stent stage from either seed — not this issue's class; draws 6 and
+  // 10 stopped so too until a loop of the skeleton across the crotch was no longer taken for an
+  // internal iliac (LabelAortoIliacTree.h, step 3) — and is compared by its error; the others are
+  // planned.
   int stopped = 0;
   for (const testing::SeedPhantom& v : testing::RandomSeedPhantoms(20))
-    stopped += ExpectSamePlan(v, WithWindowFromLumen());
-  EXPECT_LE(stopped, 2) << "at most the two known stops";
+    stopped += ExpectSamePlan(v, PlanParams{});
+  EXPECT_LE(stopped, 1) << "at most the one known stop";
 }
 
 } // namespace
