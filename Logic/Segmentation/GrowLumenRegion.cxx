@@ -1023,9 +1023,15 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
       const auto met = std::find_if(growths.begin(), growths.end(), same);
       if (met != growths.end())
       {
+        // Narrowest first, then the higher lower ends: an order of the windows themselves, not of
+        // the cycle's phase (two windows of one width, one shifted, would otherwise be told apart
+        // by which came first, i.e. by the seed).
         const auto narrowest = std::min_element(met, growths.end(),
                                                 [](const Growth& x, const Growth& y)
-                                                { return TotalWidth(x.windows) < TotalWidth(y.windows); });
+                                                {
+                                                  const long wx = TotalWidth(x.windows), wy = TotalWidth(y.windows);
+                                                  return wx != wy ? wx < wy : x.windows.lower > y.windows.lower;
+                                                });
         if (narrowest != growths.end() - 1)
         {
           Growth chosen = *narrowest;
