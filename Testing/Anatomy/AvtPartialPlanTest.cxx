@@ -61,7 +61,8 @@ void ExpectPartialPlanWithTheWholeScansAorticValues(const std::string& name, con
   // The aortic part is the whole scan's: the same site, (a)–(c) within 0.3 mm and (d) within
   // 0.5 mm — the trunk's last rings sit 3 stent radii above the skeleton's junction, which moves
   // with the cut (up to 3 mm here), and the fit near them with it (measured: ≤ 0.28 mm) — and α
-  // (above the site) unchanged. The lumen itself is the same voxel for voxel above the cut.
+  // (above the site) unchanged. (On D4 the lumen itself is the same voxel for voxel above the
+  // cut, at all three levels.)
   // D4 has no renal artery in view: its site is the top of its segmented aorta, where the lumen
   // closes, and (a) is read on a ring that does not settle there — with the stopping tolerance at
   // 0.001 mm instead of 0.005 mm it moves on for all 3000 steps (whole scan 26.1 → 26.4 mm, cut
