@@ -87,8 +87,8 @@ constexpr double outsideParentStartMm = 1.0;
 
 /// The direction in which a side branch leaves its parent, for naming it (step 4): the chord of
 /// the branch's path (`branch`, from the junction outward) from its first point at least
-/// `outsideParentStartMm` outside the parent's wall — the distance to the nearest point of the
-/// parent's centerline past the parent's radius there — to `reach` mm further along it. The
+/// `outsideParentStartMm` outside the parent's wall — the distance to the parent's centerline past
+/// the parent's radius there — to `reach` mm further along it. The
 /// skeleton's junction lies on the parent's axis, and inside the parent the branch's skeleton
 /// follows the medial surface, which can run along the axis for a parent radius or more before
 /// it turns out (a 6 mm renal from an 18 mm neck: 11 mm up the axis, then level); the chord from
@@ -101,14 +101,9 @@ Eigen::Vector3d DirectionOutsideParent(const std::vector<Point3>& branch,
 {
   const auto outside = [&](const Point3& p)
   {
-    double nearest = std::numeric_limits<double>::infinity(), radius = 0.0;
-    for (Eigen::Index i = 0; i < parent.Size(); ++i)
-    {
-      const double d = (p - parent.points.row(i).transpose()).norm();
-      if (d < nearest)
-        nearest = d, radius = parent.radiusMm[i];
-    }
-    return nearest - radius;
+    double distance = 0.0;
+    const double s = ProjectOntoCenterline(parent, p, &distance);
+    return distance - RadiusAt(parent, s);
   };
   std::size_t start = 0;
   while (start < branch.size() && outside(branch[start]) < outsideParentStartMm)

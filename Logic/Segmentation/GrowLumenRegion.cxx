@@ -830,8 +830,12 @@ std::vector<double> EdgeLevels(const CtImage& ct,
   std::vector<double> edge(static_cast<std::size_t>(nz), 0.5 * (medianHu + tissueHu));
   if (sliceLevelHu.empty())
     return edge;
+  std::vector<long> slabOfK(static_cast<std::size_t>(nz));
+  for (long k = 0; k < nz; ++k)
+    slabOfK[static_cast<std::size_t>(k)] = SlabOfSlice(ct, firstSlice + k);
   std::map<long, std::vector<double>> samples; // by slab
-  ForEachTissueSample(mask, hu, depth, [&](long k, short v) { samples[SlabOfSlice(ct, firstSlice + k)].push_back(v); });
+  ForEachTissueSample(mask, hu, depth,
+                      [&](long k, short v) { samples[slabOfK[static_cast<std::size_t>(k)]].push_back(v); });
   std::map<long, double> tissue;
   for (auto& [slab, values] : samples)
     if (static_cast<long>(values.size()) >= minimumSlabVoxels)
@@ -841,7 +845,7 @@ std::vector<double> EdgeLevels(const CtImage& ct,
     const long image = firstSlice + k;
     if (image < 0 || image >= static_cast<long>(sliceLevelHu.size()))
       continue;
-    const auto t = tissue.find(SlabOfSlice(ct, image));
+    const auto t = tissue.find(slabOfK[static_cast<std::size_t>(k)]);
     edge[static_cast<std::size_t>(k)] =
       0.5 * (sliceLevelHu[static_cast<std::size_t>(image)] + (t != tissue.end() ? t->second : tissueHu));
   }
