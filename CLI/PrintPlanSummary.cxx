@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "Common/Format.h"
+#include "Pipeline/OrderListText.h"
 
 namespace sgp
 {
@@ -63,6 +64,12 @@ void PrintPlanSummary(const RepairPlan& plan, const std::string& acmMode, std::o
     out << "Device: " << plan.selection.summary << std::endl;
     for (const std::string& reason : plan.selection.reasons)
       out << "  " << reason << std::endl;
+    out << "Lengths along the centerlines: " << AnatomyLengthsText(plan) << std::endl;
+    const std::vector<std::string> order = OrderLines(plan);
+    if (!order.empty())
+      out << "Order list: " << order.front() << std::endl;
+    for (std::size_t i = 1; i < order.size(); ++i)
+      out << order[i] << std::endl;
     if (plan.HasGraft())
     {
       const FitCheck& check = plan.fitCheck;

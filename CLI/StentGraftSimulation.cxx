@@ -69,7 +69,8 @@ int main(int argc, char* argv[])
     if (acmMode != "measure")
       params.simulate = contour(acmMode, stentDiametersMm);
     params.graft = contour("simulate", { 24.0, 14.0, 14.0 }); // the graft's radii are the chosen device's
-    params.selection = MakeDeviceSelectionParams(device, proximalOversizingRange, limbOversizingRange);
+    params.selection = MakeDeviceSelectionParams(device, proximalOversizingRange, limbOversizingRange, ipsilateralSide);
+    params.deploymentOffsetMm = CheckDeploymentOffset(deploymentOffsetMm);
     ValidateParameters(inputVolume, seed, params.growing, params.graph, params.centerlines, params.mesh,
                        params.simulate ? *params.simulate : params.measure);
     PlanRequest request = PlanRequestFor(paths);

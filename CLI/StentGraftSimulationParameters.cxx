@@ -177,7 +177,8 @@ void ValidateParameters(const std::string& inputVolume,
 
 DeviceSelectionParams MakeDeviceSelectionParams(const std::string& device,
                                                 const std::vector<double>& proximalOversizingRange,
-                                                const std::vector<double>& limbOversizingRange)
+                                                const std::vector<double>& limbOversizingRange,
+                                                const std::string& ipsilateralSide)
 {
   for (const auto& [name, range] : { std::pair{ "proximalOversizingRange", &proximalOversizingRange },
                                      std::pair{ "limbOversizingRange", &limbOversizingRange } })
@@ -195,8 +196,15 @@ DeviceSelectionParams MakeDeviceSelectionParams(const std::string& device,
   params.limbOversizingMinPercent = limbOversizingRange[0];
   params.limbOversizingMaxPercent = limbOversizingRange[1];
   params.forcedDevice = device == "auto" ? std::string() : device;
+  params.ipsilateralSide = ParseIpsilateralSide(ipsilateralSide, "ipsilateralSide");
   ValidateDeviceSelectionParams(params);
   return params;
+}
+
+double CheckDeploymentOffset(double deploymentOffsetMm)
+{
+  CheckRange("deploymentOffsetMm", deploymentOffsetMm, -30.0, 60.0, "mm");
+  return deploymentOffsetMm;
 }
 
 } // namespace sgp

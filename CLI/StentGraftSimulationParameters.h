@@ -59,11 +59,17 @@ ActiveContourParams MakeActiveContourParams(const std::string& acmMode,
                                             double acmToleranceMm);
 
 /// The device-selection parameters: `device` "auto" (every family) or "Family[:diameter]"; each
-/// range two values min,max in %. \throws InputError for a range that is not two values, or
-/// min > max, or out of [0, 100] (ValidateDeviceSelectionParams).
+/// range two values min,max in %; `ipsilateralSide` auto, right or left. \throws InputError for a
+/// range that is not two values, or min > max, or out of [0, 100] (ValidateDeviceSelectionParams),
+/// or another side.
 DeviceSelectionParams MakeDeviceSelectionParams(const std::string& device,
                                                 const std::vector<double>& proximalOversizingRange,
-                                                const std::vector<double>& limbOversizingRange);
+                                                const std::vector<double>& limbOversizingRange,
+                                                const std::string& ipsilateralSide = "auto");
+
+/// The deployment offset, mm. \throws InputError "deploymentOffsetMm is … mm; expected -30.0 to
+/// 60.0 mm." outside that range.
+double CheckDeploymentOffset(double deploymentOffsetMm);
 
 /// Checks the text of each point argument on the command line (`--<flag> x,y,z` for every flag
 /// in `pointFlags`): three comma-separated numbers, each complete. Inside Slicer the CLI is built

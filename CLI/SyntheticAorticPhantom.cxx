@@ -29,6 +29,8 @@ int main(int argc, char* argv[])
     p.neckAngleDeg = neckAngleDeg;
     p.rightIliacDiameterMm = rightIliacDiameterMm;
     p.leftIliacDiameterMm = leftIliacDiameterMm;
+    p.rightCommonIliacLengthMm = rightCommonIliacLengthMm;
+    p.leftCommonIliacLengthMm = leftCommonIliacLengthMm;
     p.lumenHu = lumenHu;
     p.tissueHu = tissueHu;
     p.blurSigmaMm = blurSigmaMm;

@@ -8,6 +8,7 @@
 #include "Common/Errors.h"
 #include "Common/Text.h"
 #include "Device/CriterionCheck.h"
+#include "Device/ValidateCatalogueComponents.h"
 
 namespace sgp
 {
@@ -34,6 +35,9 @@ public:
       Fail("name", "contains ':'", "a name without ':' (--device uses ':' before the diameter)");
     if (TrimBlanks(m_Family.source).empty())
       Fail("source", "is empty", "where the figures come from, with its evidence mark");
+    // The components first: the sizes below are derived from them, so a component's defect is
+    // reported on the component.
+    ValidateCatalogueComponents(m_Catalog, m_Index);
     CheckComponent(m_Family.mainBodies, "mainBodies", "main body");
     CheckComponent(m_Family.limbs, "limbs", "limb");
     if (!m_Family.limbs.lengthToFlowDividerMm.empty())
@@ -159,6 +163,112 @@ std::string DescribeCatalogField(const std::string& origin,
       text += " \"" + familyName + "\"";
   }
   return text + ", field '" + field + "'";
+}
+
+std::string DescribeCatalogComponentField(const std::string& origin,
+                                          int familyIndex,
+                                          const std::string& familyName,
+                                          const CatalogueComponent& component,
+                                          const std::string& field)
+{
+  std::string text = DescribeCatalogField(origin, familyIndex, familyName, field);
+  const std::string opening = ", field '";
+  return text.insert(text.rfind(opening), ", component " + component.Label());
+}
+
+const char* ToString(ComponentRole role)
+{
+  switch (role)
+  {
+    case ComponentRole::MainBody:
+      return "mainBody";
+    case ComponentRole::Limb:
+      return "limb";
+    case ComponentRole::IliacExtension:
+      return "iliacExtension";
+    case ComponentRole::AorticCuff:
+      return "aorticCuff";
+  }
+  return "";
+}
+
+const char* GroupKey(ComponentRole role)
+{
+  switch (role)
+  {
+    case ComponentRole::MainBody:
+      return "mainBodies";
+    case ComponentRole::Limb:
+      return "limbs";
+    case ComponentRole::IliacExtension:
+      return "iliacExtensions";
+    case ComponentRole::AorticCuff:
+      return "aorticCuffs";
+  }
+  return "";
+}
+
+bool CatalogueComponent::GeometryKnown() const
+{
+  return role == ComponentRole::MainBody && std::isfinite(lengthMm) && std::isfinite(flowDividerMm) &&
+         std::isfinite(gateEndMm);
+}
+
+std::string CatalogueComponent::Label() const
+{
+  return std::string(GroupKey(role)) + ".items[" + std::to_string(index) + "]" + (code.empty() ? "" : " " + code);
+}
+
+std::string CatalogueComponent::CodeText() const
+{
+  return code.empty() ? "(code not public)" : code;
+}
+
+std::vector<const CatalogueComponent*> DeviceFamily::ComponentsOf(ComponentRole role) const
+{
+  std::vector<const CatalogueComponent*> found;
+  for (const CatalogueComponent& c : components)
+    if (c.role == role)
+      found.push_back(&c);
+  return found;
+}
+
+void DeriveSizesFromComponents(DeviceFamily& family)
+{
+  if (family.components.empty())
+    return;
+  const auto derive = [&](ComponentRole role, DeviceComponent& group, bool proximal)
+  {
+    std::vector<DeviceSize> sizes;
+    group.lengthMinMm = group.lengthMaxMm = std::numeric_limits<double>::quiet_NaN();
+    group.lengthToFlowDividerMm.clear();
+    for (const CatalogueComponent* c : family.ComponentsOf(role))
+    {
+      const double d = proximal ? c->diameterMm : c->distalDiameterMm;
+      auto same = std::find_if(sizes.begin(), sizes.end(), [&](const DeviceSize& s) { return s.diameterMm == d; });
+      if (same == sizes.end())
+        sizes.push_back({ d, c->profileFr });
+      else
+        same->profileFr = std::max(same->profileFr, c->profileFr);
+      if (std::isfinite(c->lengthMm))
+      {
+        group.lengthMinMm = std::isnan(group.lengthMinMm) ? c->lengthMm : std::min(group.lengthMinMm, c->lengthMm);
+        group.lengthMaxMm = std::isnan(group.lengthMaxMm) ? c->lengthMm : std::max(group.lengthMaxMm, c->lengthMm);
+      }
+      if (std::isfinite(c->flowDividerMm) &&
+          std::find(group.lengthToFlowDividerMm.begin(), group.lengthToFlowDividerMm.end(), c->flowDividerMm) ==
+            group.lengthToFlowDividerMm.end())
+        group.lengthToFlowDividerMm.push_back(c->flowDividerMm);
+      if (group.evidence.empty())
+        group.evidence = c->evidence;
+    }
+    std::sort(sizes.begin(), sizes.end(),
+              [](const DeviceSize& a, const DeviceSize& b) { return a.diameterMm < b.diameterMm; });
+    std::sort(group.lengthToFlowDividerMm.begin(), group.lengthToFlowDividerMm.end());
+    group.sizes = sizes;
+  };
+  derive(ComponentRole::MainBody, family.mainBodies, true);
+  derive(ComponentRole::Limb, family.limbs, false);
 }
 
 const char* ToString(DiameterReference reference)

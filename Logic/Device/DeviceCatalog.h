@@ -1,13 +1,25 @@
 /// \file DeviceCatalog.h
 /// The stent-graft device catalogue as plain data, and its semantic validation.
 ///
-/// A catalogue lists bifurcated EVAR device families (Endurant II, Excluder, …): the proximal
-/// diameters of the main bodies and the diameters of the iliac limbs that can be ordered, each
-/// with its delivery profile, and the anatomical criteria of the family's instructions for use
-/// (IFU). The shipped catalogue, `Resources/devices.json`, holds public figures from
-/// `shared/reference/evar-sizing.md` §2.1–2.2; it is user-editable and every figure must be
-/// verified against the current IFU. Reading the file is the I/O room's job
-/// (IO/ReadDeviceCatalog.h); this file holds no I/O.
+/// A catalogue lists bifurcated EVAR device families (Endurant II, Excluder, …): every component
+/// that can be ordered — main bodies, limbs, iliac extensions, aortic cuffs — with its catalogue
+/// code (where public), diameters, covered length and delivery profile, and for main bodies the
+/// flow divider's and the contralateral gate's distance from the proximal fabric edge, the gate's
+/// diameter and the crotch width; the overlap the family needs between components and the gate's
+/// clearance above the aortic bifurcation; and the anatomical criteria of the family's
+/// instructions for use (IFU). The shipped catalogue, `Resources/devices.json`, holds public
+/// figures from `shared/reference/evar-sizing.md` §2.1–2.2 and `device-configuration.md` §1; it is
+/// user-editable, every family says `verified: false` until someone reads the manufacturer's
+/// current sizing table, and a figure no public source gave is NaN here (null in the file): the
+/// configuration then reports what depends on it as unknown. Reading the file is the I/O room's
+/// job (IO/ReadDeviceCatalog.h); this file holds no I/O.
+///
+/// Component geometry (mm, along the graft from its proximal fabric edge): a main body's
+/// `lengthMm` is its covered length to the ipsilateral leg's distal end, `flowDividerMm` where its
+/// two lumens part, `gateEndMm` where the contralateral gate (the short leg a contralateral limb is
+/// inserted into) ends; so the gate stub is gateEnd − flowDivider long and a limb can overlap in
+/// it by at most that. A limb's or extension's `diameterMm` is its proximal end (the part inside
+/// the gate or leg it is inserted into), `distalDiameterMm` its landing end.
 ///
 /// Units: diameters and lengths in mm (IFU diameters are outer wall to outer wall), angles in
 /// degrees, delivery profiles in French (outer diameter in mm = Fr / 3). A NaN limit means "no
@@ -37,7 +49,58 @@ struct DeviceSize
   double profileFr = 0.0;  ///< delivery system outer diameter, French (> 0; mm = Fr / 3)
 };
 
-/// The main bodies or the limbs of one family.
+/// What a catalogue component is for.
+enum class ComponentRole
+{
+  MainBody,       ///< bifurcated trunk with its ipsilateral leg and contralateral gate
+  Limb,           ///< iliac limb (contralateral or ipsilateral leg)
+  IliacExtension, ///< extends a limb distally
+  AorticCuff      ///< extends the main body proximally
+};
+
+/// "mainBody", "limb", "iliacExtension", "aorticCuff" (the report's role names).
+const char* ToString(ComponentRole role);
+/// "mainBodies", "limbs", "iliacExtensions", "aorticCuffs" (the catalogue's group keys).
+const char* GroupKey(ComponentRole role);
+
+/// A figure the sources disagree on: every value they give (the component's own is the chosen
+/// one, and must be among them) and a note naming the sources.
+struct FigureConflict
+{
+  std::string field; ///< the component field, e.g. "lengthMm"
+  std::vector<double> values;
+  std::string note;
+};
+
+/// One orderable component. NaN: not found in any public source (null in the file).
+struct CatalogueComponent
+{
+  static constexpr double Unknown = std::numeric_limits<double>::quiet_NaN();
+  ComponentRole role = ComponentRole::Limb;
+  int index = 0;                     ///< position within its role's group in the catalogue ("items[index]")
+  std::string name;                  ///< the product line, e.g. "Endurant II bifurcated main body"
+  std::string code;                  ///< catalogue code; empty when it is not public
+  double diameterMm = Unknown;       ///< proximal end, mm (> 0; required for a main body)
+  double distalDiameterMm = Unknown; ///< distal end (a main body's ipsilateral leg), mm (> 0; required for a limb)
+  double lengthMm = Unknown;         ///< covered length, mm (> 0)
+  double profileFr = Unknown;        ///< delivery system, French (> 0, required)
+  double flowDividerMm = Unknown;    ///< main bodies: proximal edge to the flow divider, mm
+  double gateEndMm = Unknown;        ///< main bodies: proximal edge to the contralateral gate's end, mm
+  double gateDiameterMm = Unknown;   ///< main bodies: the contralateral gate, mm
+  double crotchWidthMm = Unknown;    ///< main bodies: both lumens side by side at the flow divider, mm
+  std::string evidence;              ///< its own, else its group's
+  std::string note;
+  std::vector<FigureConflict> conflicts;
+
+  /// A main body whose covered length, flow divider and gate end are all known.
+  bool GeometryKnown() const;
+  /// "mainBodies.items[3] ETBF2313C124E" (or without the code when it is not public).
+  std::string Label() const;
+  /// The code, or "(code not public)".
+  std::string CodeText() const;
+};
+
+/// The main bodies or the limbs of one family, as the selection sizes them.
 struct DeviceComponent
 {
   std::vector<DeviceSize> sizes; ///< at least one, diameters strictly ascending
@@ -63,6 +126,15 @@ struct IfuLimit
   double min = std::numeric_limits<double>::quiet_NaN();
   double max = std::numeric_limits<double>::quiet_NaN();
   std::string evidence;
+};
+
+/// The overlap a family needs where one component is inserted into another (limb in the gate or
+/// the ipsilateral leg, extension in a limb), mm, and how far above the aortic bifurcation the
+/// contralateral gate must open to be cannulated, mm. NaN: not found.
+struct ComponentJunctions
+{
+  IfuLimit overlapMm;       ///< min and max (each NaN when not found)
+  IfuLimit gateClearanceMm; ///< min (NaN when not found)
 };
 
 /// A family's IFU anatomical criteria.
@@ -97,21 +169,34 @@ struct DeviceFamily
   /// The diameter its ranges use (catalogue field "diameterReference", required): sizing, the IFU
   /// diameter checks and the limb choice use the anatomy's diameters on that wall.
   DiameterReference diameterReference = DiameterReference::OuterWall;
+  /// false until someone has read the manufacturer's current sizing table (catalogue field
+  /// "verified", required); reports say so beside every figure of an unverified family.
+  bool verified = false;
+  /// The selection's view: main-body proximal diameters and limb distal diameters with their
+  /// largest delivery profile, lengths and flow-divider positions, derived from `components` by
+  /// the reader (a catalogue built in memory may give them alone, without components).
   DeviceComponent mainBodies;
   DeviceComponent limbs;
+  /// Every orderable component, grouped by role in the order mainBody, limb, iliacExtension,
+  /// aorticCuff (empty: the catalogue gives diameters only, so nothing can be configured).
+  std::vector<CatalogueComponent> components;
+  ComponentJunctions junctions;
   DeviceIfu ifu;
+  /// The components of `role`, in catalogue order.
+  std::vector<const CatalogueComponent*> ComponentsOf(ComponentRole role) const;
 };
 
 struct DeviceCatalog
 {
   /// Where the catalogue came from (a path, or a description); error messages name it.
   std::string origin;
-  int formatVersion = 1;
+  int formatVersion = 2;
   std::vector<DeviceFamily> families; ///< in catalogue order (ties in selection follow it)
 };
 
-/// The catalogue format version this code reads.
-constexpr int DeviceCatalogFormatVersion = 1;
+/// The catalogue format version this code reads (2: every component listed; 1 listed diameters
+/// only).
+constexpr int DeviceCatalogFormatVersion = 2;
 
 /// "Device catalogue '<origin>', families[<index>] \"<name>\", field '<field>'" — the opening
 /// of every message about one field of one entry (also used by the reader). An empty name is
@@ -121,14 +206,34 @@ std::string DescribeCatalogField(const std::string& origin,
                                  const std::string& familyName,
                                  const std::string& field);
 
+/// "Device catalogue '<origin>', families[<index>] \"<name>\", component <Label()>, field
+/// '<field>'" — the opening of every message about one field of one component.
+std::string DescribeCatalogComponentField(const std::string& origin,
+                                          int familyIndex,
+                                          const std::string& familyName,
+                                          const CatalogueComponent& component,
+                                          const std::string& field);
+
+/// The selection's sizes from the components: the main bodies' proximal diameters and the limbs'
+/// distal diameters, ascending, each with the largest profile of its components, the length range
+/// and the known flow-divider positions; evidence from the first component of each role. Leaves a
+/// family without components as it is.
+void DeriveSizesFromComponents(DeviceFamily& family);
+
 /// Checks the semantic rules listed on the structs above: at least one family; names non-empty,
 /// unique (case-insensitively, as --device matches them) and without ':'; source non-empty;
 /// sizes, lengths and profiles positive; diameters strictly ascending; every range min < max;
 /// neck-length tiers as documented; angles in (0, 180]; the largest main body wider than the
 /// largest IFU neck diameter and the largest limb wider than the largest IFU iliac diameter
 /// (otherwise those necks or iliacs could not be sealed); flow-divider lengths only on main
-/// bodies.
-/// \throws InputError "<DescribeCatalogField(…)>: <value seen>; expected <rule>; correct the
+/// bodies. Components (when given; the reader rejects a missing or empty code — null is "not
+/// public", an empty code here): diameters, lengths and profile positive where known, a main body's diameter, a limb's
+/// distal diameter and every profile known; a main body's flow divider before its gate end and both within its covered
+/// length (a gate beyond the body's length), its gate narrower than the body; each conflict naming a component field
+/// and listing the value chosen; the junctions' overlap min ≥ 0, max ≥ min, and the minimum overlap no longer than any
+/// main body's gate stub (gateEnd − flowDivider: a limb could not be inserted that far); the gate clearance ≥ 0; and
+/// the sizes consistent with the components (DeriveSizesFromComponents). \throws InputError "<DescribeCatalogField(…)>:
+/// <value seen>; expected <rule>; correct the
 ///         entry." for the first broken rule.
 void ValidateDeviceCatalog(const DeviceCatalog& catalog);
 

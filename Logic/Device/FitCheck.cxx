@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
+#include "Centerlines/ProximalSite.h"
 #include "Common/Errors.h"
 #include "Common/Format.h"
 #include "Common/Median.h"
@@ -14,20 +16,161 @@ namespace sgp
 namespace
 {
 
+constexpr double pi = 3.14159265358979323846;
+constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double landingZoneMm = 15.0; ///< as MeasureAnatomy's (e)/(f)
 
-/// Whether ring k of a segment seals.
-bool RingSeals(const StentMesh& mesh, int seg, int k, const Eigen::VectorXi& sealing, double fraction)
+std::string Mm(double value)
 {
-  int touching = 0;
-  for (int j = 0; j < mesh.verticesPerRing; ++j)
-    touching += sealing[mesh.Id(seg, k, j)];
-  return touching >= fraction * mesh.verticesPerRing;
+  return FormatNumber(value) + " mm";
 }
 
 std::string Percent(double value)
 {
-  return FormatNumber(value) + " %";
+  return FormatNumber(value, 0) + " %";
+}
+
+/// The wall under one vertex, read off the traced plane at its level (VesselWall).
+struct WallUnder
+{
+  int healthy = -1; ///< 1, 0, −1 not traced
+  double thrombusMm = NaN;
+  int calcified = -1;
+  bool aneurysmal = false;
+  double vesselDiameterMm = NaN; ///< the outer wall's area-equivalent diameter there, NaN: not traced
+};
+
+WallUnder ReadWallUnder(const VesselWall* wall,
+                        int segment,
+                        double abscissaMm,
+                        const Point3& vertex,
+                        double neckLimitMm,
+                        const FitCheckParams& p)
+{
+  WallUnder under;
+  if (!wall)
+    return under;
+  const OuterWallPlane* plane = wall->vessels[std::size_t(segment)].Nearest(abscissaMm);
+  if (!plane || !plane->Usable() || std::abs(plane->abscissaMm - abscissaMm) > 0.5 * wall->stepMm + 1e-9 ||
+      plane->thrombusMm.size() == 0)
+    return under;
+  const Eigen::Vector3d d = vertex - plane->centreLps;
+  double angle = std::atan2(d.dot(plane->vLps), d.dot(plane->uLps));
+  if (angle < 0.0)
+    angle += 2.0 * pi;
+  const Eigen::Index rays = plane->thrombusMm.size();
+  const double x = angle / (2.0 * pi) * double(rays);
+  const Eigen::Index k0 = Eigen::Index(std::floor(x)) % rays, k1 = (k0 + 1) % rays;
+  const double f = x - std::floor(x);
+  under.thrombusMm = (1.0 - f) * plane->thrombusMm[k0] + f * plane->thrombusMm[k1];
+  under.calcified = plane->calcified[std::size_t(f < 0.5 ? k0 : k1)] ? 1 : 0;
+  under.aneurysmal = segment == TrunkSegment && std::isfinite(neckLimitMm) && plane->minCaliperMm > neckLimitMm;
+  under.vesselDiameterMm = plane->areaDiameterMm;
+  const bool healthy =
+    under.thrombusMm <= p.maxThrombusMm && !under.aneurysmal && (p.calciumSeals || under.calcified == 0);
+  under.healthy = healthy ? 1 : 0;
+  return under;
+}
+
+/// The share of a wall plane's rays under which a graft would not seal: thrombus thicker than the
+/// limit, or (an aortic plane) the whole plane when its smallest width exceeds the neck's limit.
+double UnhealthyShare(const OuterWallPlane& plane, double neckLimitMm, const FitCheckParams& p)
+{
+  if (std::isfinite(neckLimitMm) && plane.minCaliperMm > neckLimitMm)
+    return 1.0;
+  int unhealthy = 0;
+  for (Eigen::Index k = 0; k < plane.thrombusMm.size(); ++k)
+    unhealthy += plane.thrombusMm[k] > p.maxThrombusMm || (!p.calciumSeals && plane.calcified[std::size_t(k)]) ? 1 : 0;
+  return double(unhealthy) / double(plane.thrombusMm.size());
+}
+
+/// The lumen's diameter at `s` on `segment`: the measured ring profile where it reaches, else
+/// (an extension beyond the measured landing zone) twice the centerline's inscribed radius.
+double LumenDiameterAt(const Measurements& m, const CenterlineTree& tree, int segment, double s)
+{
+  const DiameterProfile& profile = m.profiles[std::size_t(segment)];
+  if (!profile.rings.empty() && s <= profile.rings.back().abscissaMm + 2.0 &&
+      s >= profile.rings.front().abscissaMm - 2.0)
+    return profile.At(s).meanMm;
+  const Centerline* vessel[3] = { &tree.aorta, &tree.rightIliac, &tree.leftIliac };
+  return 2.0 * RadiusAt(*vessel[segment], s);
+}
+
+/// The share of ring k's vertices that seal.
+double SealingShare(const StentMesh& mesh, int seg, int k, const Eigen::VectorXi& sealing)
+{
+  int touching = 0;
+  for (int j = 0; j < mesh.verticesPerRing; ++j)
+    touching += sealing[mesh.Id(seg, k, j)];
+  return double(touching) / mesh.verticesPerRing;
+}
+
+/// The sealed length from ring `from` toward ring `to` (one step `dir`), given each ring's share of
+/// sealing vertices: to where that share, interpolated linearly between the last ring at or above
+/// `fraction` and the first below it, crosses `fraction`; the whole stretch when every ring seals;
+/// 0 when the first does not.
+double SealedLength(const std::vector<double>& s,
+                    int from,
+                    int to,
+                    int dir,
+                    const std::function<double(int)>& share,
+                    double fraction,
+                    int* firstFailing = nullptr)
+{
+  int k = from;
+  while (k != to + dir && share(k) >= fraction)
+    k += dir;
+  if (firstFailing)
+    *firstFailing = k == to + dir ? -1 : k;
+  if (k == from)
+    return 0.0;
+  if (k == to + dir)
+    return std::abs(s[std::size_t(to)] - s[std::size_t(from)]);
+  const double a = share(k - dir), b = share(k);
+  const double t = a > b ? std::clamp((a - fraction) / (a - b), 0.0, 1.0) : 0.5;
+  const double end = s[std::size_t(k - dir)] + t * (s[std::size_t(k)] - s[std::size_t(k - dir)]);
+  return std::abs(end - s[std::size_t(from)]);
+}
+
+/// Why ring k of the trunk does not seal, in words.
+std::string WhyRingDoesNotSeal(const StentMesh& mesh,
+                               int k,
+                               const FitCheck& c,
+                               const std::vector<bool>& aneurysmal,
+                               const FitCheckParams& p)
+{
+  int gap = 0, thrombus = 0, wide = 0;
+  double largestGap = 0.0;
+  for (int j = 0; j < mesh.verticesPerRing; ++j)
+  {
+    const int i = mesh.Id(TrunkSegment, k, j);
+    if (c.appositionMm[i] > p.contactToleranceMm)
+    {
+      ++gap;
+      largestGap = std::max(largestGap, c.appositionMm[i]);
+    }
+    else if (aneurysmal[std::size_t(i)])
+      ++wide;
+    else if (c.healthyWall[i] == 0)
+      ++thrombus;
+  }
+  const double n = mesh.verticesPerRing;
+  std::string why;
+  const auto add = [&](const std::string& part) { why += (why.empty() ? "" : "; ") + part; };
+  if (wide > 0)
+    add("the aorta widens beyond " + FormatNumber(100.0 + p.neckDilationPercent, 0) + " % of (a) under " +
+        Percent(100.0 * wide / n) + " of the ring (the aneurysm)");
+  if (thrombus > 0)
+    add("thrombus over " + FormatNumber(p.maxThrombusMm, 0) + " mm thick under " + Percent(100.0 * thrombus / n) +
+        " of the ring");
+  if (gap > 0)
+    add(Percent(100.0 * gap / n) + " of the ring is not apposed (gap up to " + Mm(largestGap) + ")");
+  return why;
+}
+
+std::string ComponentWords(const ConfiguredComponent& c)
+{
+  return c.item.name + (c.item.code.empty() ? "" : " " + c.item.code);
 }
 
 } // namespace
@@ -41,89 +184,143 @@ std::string FitCheck::CoveredOstia() const
   return names.empty() ? "none" : names;
 }
 
-FitCheck CheckGraftFit(const StentMesh& mesh,
-                       const Points& V,
-                       const Eigen::VectorXd& wallDistanceMm,
+FitCheck CheckGraftFit(const DeployedGraft& graft,
                        const Measurements& measured,
                        const CenterlineTree& tree,
-                       const std::array<double, 3>& graft,
-                       const FitCheckParams& p,
-                       const VesselWall* wall)
+                       const VesselWall* wall,
+                       const FitCheckContext& context,
+                       const FitCheckParams& p)
 {
+  const GraftLayout& layout = graft.layout;
+  const StentMesh& mesh = layout.mesh;
   const Eigen::Index n = mesh.V.rows();
-  if (V.rows() != n || wallDistanceMm.size() != n)
+  const Points& V = graft.fit.V;
+  if (V.rows() != n || graft.fit.wallDistanceMm.size() != n || layout.component.size() != n)
     throw InputError("The simulated graft has " + std::to_string(V.rows()) + " vertices and " +
-                     std::to_string(wallDistanceMm.size()) + " wall distances; expected the mesh's " +
+                     std::to_string(graft.fit.wallDistanceMm.size()) + " wall distances; expected the layout's " +
                      std::to_string(n) + ".");
-  for (int seg = 0; seg < 3; ++seg)
-    if (measured.profiles[seg].rings.size() != static_cast<std::size_t>(mesh.RingsIn(seg)))
-      throw InputError("The measurements have " + std::to_string(measured.profiles[seg].rings.size()) +
-                       " rings on segment " + std::to_string(seg) + "; expected the mesh's " +
-                       std::to_string(mesh.RingsIn(seg)) + " (measure and simulate the same mesh).");
-  // The vessel diameter under ring k of segment seg, and whether it is the outer wall's.
-  const auto vesselAt = [&](int seg, int k, bool& outer)
-  {
-    const double s = mesh.ringAbscissaMm[seg][std::size_t(k)];
-    const OuterWallPlane* plane = wall ? wall->vessels[seg].Nearest(s) : nullptr;
-    outer = plane && plane->Usable() && std::abs(plane->abscissaMm - s) <= 0.5 * wall->stepMm + 1e-9;
-    return outer ? plane->areaDiameterMm : measured.profiles[seg].rings[std::size_t(k)].meanMm;
-  };
-  int outerSummaries = 0;
+  const double aOuter = measured.Value("proximalNeckDiameter");
+  const double neckLimit = std::isfinite(aOuter) ? (1.0 + p.neckDilationPercent / 100.0) * aOuter : NaN;
   FitCheck c;
   c.oversizingPercent.resize(n);
   c.appositionMm.resize(n);
+  c.healthyWall.resize(n);
+  c.thrombusUnderMm.resize(n);
+  c.calcified.resize(n);
   c.sealing.resize(n);
-  for (Eigen::Index v = 0; v < n; ++v)
+  std::vector<bool> aneurysmal(std::size_t(n), false);
+  std::vector<bool> outerAt(std::size_t(n), false);
+  for (Eigen::Index i = 0; i < n; ++i)
   {
-    const int seg = mesh.segment[v], k = mesh.ring[v];
-    bool outer = false;
-    c.oversizingPercent[v] = OversizingPercent(graft[seg], vesselAt(seg, k, outer));
-    c.appositionMm[v] = std::max(0.0, -wallDistanceMm[v]);
-    c.sealing[v] = c.appositionMm[v] <= p.contactToleranceMm ? 1 : 0;
+    const int seg = mesh.segment[i], k = mesh.ring[i];
+    const double s = mesh.ringAbscissaMm[std::size_t(seg)][std::size_t(k)];
+    const WallUnder under = ReadWallUnder(wall, seg, s, V.row(i).transpose(), neckLimit, p);
+    c.healthyWall[i] = under.healthy;
+    c.thrombusUnderMm[i] = under.thrombusMm;
+    c.calcified[i] = under.calcified;
+    aneurysmal[std::size_t(i)] = under.aneurysmal;
+    outerAt[std::size_t(i)] = std::isfinite(under.vesselDiameterMm);
+    const double vessel =
+      std::isfinite(under.vesselDiameterMm) ? under.vesselDiameterMm : LumenDiameterAt(measured, tree, seg, s);
+    c.oversizingPercent[i] = OversizingPercent(2.0 * layout.nominalRadiusMm[i], vessel);
+    c.appositionMm[i] = std::max(0.0, -graft.fit.wallDistanceMm[i]);
+    c.sealing[i] = c.appositionMm[i] <= p.contactToleranceMm && under.healthy != 0 ? 1 : 0;
   }
 
-  // Seal zones.
-  const auto& trunkS = mesh.ringAbscissaMm[TrunkSegment];
-  int k = 0;
-  while (k < mesh.RingsIn(TrunkSegment) && RingSeals(mesh, TrunkSegment, k, c.sealing, p.sealedRingFraction))
-    ++k;
-  c.proximalSealLengthMm = k == 0 ? 0.0 : trunkS[std::min(k, mesh.RingsIn(TrunkSegment) - 1)] - trunkS[0];
+  // The proximal seal, from the trunk's first ring down, and the shortest apposition length.
+  const std::vector<double>& trunkS = mesh.ringAbscissaMm[TrunkSegment];
+  const int trunkRings = mesh.RingsIn(TrunkSegment);
+  int failing = -1;
+  c.proximalSealLengthMm = SealedLength(
+    trunkS, 0, trunkRings - 1, 1, [&](int k) { return SealingShare(mesh, TrunkSegment, k, c.sealing); },
+    p.sealedRingFraction, &failing);
+  if (failing >= 0)
+  {
+    c.proximalSealEnd = WhyRingDoesNotSeal(mesh, failing, c, aneurysmal, p);
+    // Where the wall turns unhealthy between the last sealing ring and the first that does not,
+    // read on the wall's own planes (1 mm apart) rather than half-way between rings (4 mm).
+    if (failing > 0 && wall)
+    {
+      const double from = trunkS[std::size_t(failing - 1)], to = trunkS[std::size_t(failing)];
+      for (const OuterWallPlane& plane : wall->vessels[TrunkSegment].planes)
+        if (plane.abscissaMm > from && plane.abscissaMm <= to && plane.Usable() && plane.thrombusMm.size() > 0 &&
+            UnhealthyShare(plane, neckLimit, p) > 1.0 - p.sealedRingFraction)
+        {
+          c.proximalSealLengthMm = plane.abscissaMm - trunkS.front();
+          break;
+        }
+    }
+  }
+  c.shortestAppositionLengthMm = std::numeric_limits<double>::infinity();
+  for (int j = 0; j < mesh.verticesPerRing; ++j)
+    c.shortestAppositionLengthMm = std::min(
+      c.shortestAppositionLengthMm,
+      SealedLength(
+        trunkS, 0, trunkRings - 1, 1, [&](int k) { return double(c.sealing[mesh.Id(TrunkSegment, k, j)]); }, 1.0));
+  const int sealedRings = failing < 0 ? trunkRings : failing;
+  int calcified = 0, zone = 0;
+  for (int k = 0; k < sealedRings; ++k)
+    for (int j = 0; j < mesh.verticesPerRing; ++j)
+    {
+      const int i = mesh.Id(TrunkSegment, k, j);
+      ++zone;
+      calcified += c.calcified[i] == 1 ? 1 : 0;
+      c.sealOnLumenOnly[0] = c.sealOnLumenOnly[0] || c.healthyWall[i] < 0;
+    }
+  c.proximalCalcifiedPercent = zone > 0 ? 100.0 * calcified / zone : 0.0;
+
+  // Oversizing summaries, the vessel on the outer wall where traced.
+  int outerSummaries = 0, summaries = 1;
+  const auto ringOversizing = [&](int seg, int k, bool& outer)
+  {
+    std::vector<double> values;
+    outer = true;
+    for (int j = 0; j < mesh.verticesPerRing; ++j)
+    {
+      const int i = mesh.Id(seg, k, j);
+      values.push_back(c.oversizingPercent[i]);
+      outer = outer && outerAt[std::size_t(i)];
+    }
+    return Median(values);
+  };
+  bool outerTop = false;
+  c.proximalOversizingPercent = ringOversizing(TrunkSegment, 0, outerTop);
+  outerSummaries += outerTop ? 1 : 0;
   double* iliacSeal[2] = { &c.rightIliacSealLengthMm, &c.leftIliacSealLengthMm };
   double* limbOversizing[2] = { &c.rightLimbOversizingPercent, &c.leftLimbOversizingPercent };
-  int summaries = 1; // the proximal one, then each sized limb's
   for (int side = 0; side < 2; ++side)
   {
-    c.limbChecked[side] = std::isfinite(graft[1 + side]);
+    c.limbChecked[side] = context.limbSized[side];
     if (!c.limbChecked[side])
     {
-      *iliacSeal[side] = *limbOversizing[side] = std::numeric_limits<double>::quiet_NaN();
+      *iliacSeal[side] = *limbOversizing[side] = NaN;
       continue;
     }
     ++summaries;
     const int seg = 1 + side, last = mesh.RingsIn(seg) - 1;
-    const auto& s = mesh.ringAbscissaMm[seg];
-    int m = last;
-    while (m >= 0 && RingSeals(mesh, seg, m, c.sealing, p.sealedRingFraction))
-      --m;
-    *iliacSeal[side] = m == last ? 0.0 : s[last] - s[std::max(m, 0)];
-    std::vector<double> zone;
+    const std::vector<double>& s = mesh.ringAbscissaMm[std::size_t(seg)];
+    int legFailing = -1;
+    *iliacSeal[side] = SealedLength(
+      s, last, 0, -1, [&](int k) { return SealingShare(mesh, seg, k, c.sealing); }, p.sealedRingFraction, &legFailing);
+    for (int k = last; k >= 0 && k != legFailing; --k)
+      for (int j = 0; j < mesh.verticesPerRing; ++j)
+        c.sealOnLumenOnly[std::size_t(1 + side)] =
+          c.sealOnLumenOnly[std::size_t(1 + side)] || c.healthyWall[mesh.Id(seg, k, j)] < 0;
+    std::vector<double> zoneValues;
     bool allOuter = true;
-    for (int r = 0; r <= last; ++r)
-      if (s[r] >= s[last] - landingZoneMm - 1e-9)
+    for (int k = 0; k <= last; ++k)
+      if (s[std::size_t(k)] >= s[std::size_t(last)] - landingZoneMm - 1e-9)
       {
         bool outer = false;
-        zone.push_back(OversizingPercent(graft[seg], vesselAt(seg, r, outer)));
+        zoneValues.push_back(ringOversizing(seg, k, outer));
         allOuter = allOuter && outer;
       }
-    *limbOversizing[side] = Median(zone);
+    *limbOversizing[side] = Median(zoneValues);
     outerSummaries += allOuter ? 1 : 0;
   }
-  bool outerTop = false;
-  c.proximalOversizingPercent = OversizingPercent(graft[TrunkSegment], vesselAt(TrunkSegment, 0, outerTop));
-  outerSummaries += outerTop ? 1 : 0;
   c.oversizingWall = outerSummaries == summaries ? "outer" : outerSummaries == 0 ? "lumen" : "mixed";
 
-  // Ostia under the graft.
+  // Ostia under the deployed graft.
   const struct
   {
     const char* branch;
@@ -138,12 +335,12 @@ FitCheck CheckGraftFit(const StentMesh& mesh,
   for (const auto& b : branches)
   {
     const Centerline* branch = tree.FindVessel(b.branch);
-    if (!branch || branch->Size() < 2 || (b.segment != TrunkSegment && !c.limbChecked[b.segment - 1]))
+    if (!branch || branch->Size() < 2 || (b.segment != TrunkSegment && !c.limbChecked[std::size_t(b.segment - 1)]))
       continue; // an unsized leg is not the device's: where its limb would end is not known
     const BranchOstium ostium = FindBranchOstium(*b.parent, *branch);
     if (!ostium.found)
       continue;
-    const auto& s = mesh.ringAbscissaMm[b.segment];
+    const std::vector<double>& s = mesh.ringAbscissaMm[std::size_t(b.segment)];
     OstiumCoverage o{ b.branch, b.parent->name, ostium.upperAbscissaMm, ostium.lowerAbscissaMm };
     o.overlapMm = std::min(s.back(), ostium.lowerAbscissaMm) - std::max(s.front(), ostium.upperAbscissaMm);
     o.covered = o.overlapMm > p.ostiumOverlapToleranceMm;
@@ -151,59 +348,111 @@ FitCheck CheckGraftFit(const StentMesh& mesh,
   }
 
   // Findings.
-  const auto outside = [&](double percent)
-  { return percent < p.oversizingMinPercent || percent > p.oversizingMaxPercent; };
+  const ConfiguredComponent& body = layout.components.front();
+  const auto atEnd = [&](int side) -> const ConfiguredComponent&
+  {
+    const ConfiguredComponent* last = &body;
+    for (const ConfiguredComponent& part : layout.components)
+      if (part.role != OrderRole::MainBody && part.side == side && part.distalMm >= last->distalMm - 1e-9)
+        last = &part;
+    return *last;
+  };
   const std::string range =
     FormatNumber(p.oversizingMinPercent, 0) + "–" + FormatNumber(p.oversizingMaxPercent, 0) + " %";
-  if (outside(c.proximalOversizingPercent))
-    c.findings.push_back("proximal oversizing " + Percent(c.proximalOversizingPercent) + " outside " + range);
+  const auto oversizingFindings = [&](double percent, const std::string& where)
+  {
+    if (percent > p.infoldingPercent)
+      c.findings.push_back("infolding risk: " + where + " oversized " + Percent(percent) + " (over " +
+                           Percent(p.infoldingPercent) + ")");
+    else if (percent < p.oversizingMinPercent || percent > p.oversizingMaxPercent)
+      c.findings.push_back(where + " oversizing " + Percent(percent) + " outside " + range);
+  };
+  oversizingFindings(c.proximalOversizingPercent, "the " + ComponentWords(body) + " at the proximal edge");
   const char* sides[2] = { "right", "left" };
   for (int side = 0; side < 2; ++side)
-    if (c.limbChecked[side] && outside(*limbOversizing[side]))
-      c.findings.push_back(std::string(sides[side]) + " limb oversizing " + Percent(*limbOversizing[side]) +
-                           " outside " + range);
+    if (c.limbChecked[side])
+      oversizingFindings(*limbOversizing[side],
+                         "the " + ComponentWords(atEnd(side)) + " in the " + sides[side] + " landing zone");
   if (c.proximalSealLengthMm < p.minimumProximalSealMm)
   {
     c.migrationRisk = true;
-    c.findings.push_back("proximal seal zone " + FormatNumber(c.proximalSealLengthMm) + " mm, needs ≥ " +
-                         FormatNumber(p.minimumProximalSealMm, 0) + " mm: risk of migration and type Ia endoleak");
+    c.findings.push_back("type Ia endoleak and migration risk: proximal seal " + Mm(c.proximalSealLengthMm) +
+                         ", needs ≥ " + FormatNumber(p.minimumProximalSealMm, 0) + " mm — the " + ComponentWords(body) +
+                         " seals from its proximal edge down to " + Mm(c.proximalSealLengthMm) + " below it" +
+                         (c.proximalSealEnd.empty() ? "" : ", where " + c.proximalSealEnd));
   }
+  const double iliacMinimum =
+    std::isfinite(context.minimumIliacSealMm) ? context.minimumIliacSealMm : p.minimumIliacSealMm;
   for (int side = 0; side < 2; ++side)
-    if (c.limbChecked[side] && *iliacSeal[side] < p.minimumIliacSealMm)
-      c.findings.push_back(std::string(sides[side]) + " iliac seal zone " + FormatNumber(*iliacSeal[side]) +
-                           " mm, needs ≥ " + FormatNumber(p.minimumIliacSealMm, 0) + " mm: risk of type Ib endoleak");
+    if (c.limbChecked[side] && *iliacSeal[side] < iliacMinimum)
+      c.findings.push_back("type Ib endoleak risk: " + std::string(sides[side]) + " iliac seal " +
+                           Mm(*iliacSeal[side]) + ", needs ≥ " + FormatNumber(iliacMinimum, 0) + " mm — the " +
+                           ComponentWords(atEnd(side)) + " seals over its distal " + Mm(*iliacSeal[side]));
+  // Overlaps on the deployed positions: each component in the one before it on its side's chain.
+  if (layout.configured && std::isfinite(context.minimumOverlapMm))
+    for (int side = 0; side < 2; ++side)
+    {
+      const ConfiguredComponent* outer = &body;
+      double outerEnd = side == layout.ipsilateralSide ? body.distalMm : layout.gateEndMm;
+      for (const ConfiguredComponent& part : layout.components)
+      {
+        if (part.role == OrderRole::MainBody || part.side != side)
+          continue;
+        const double overlap = outerEnd - part.proximalMm;
+        if (overlap < context.minimumOverlapMm - 1e-6)
+          c.findings.push_back("type III endoleak risk: the " + ComponentWords(part) + " overlaps " + Mm(overlap) +
+                               " in the " + ComponentWords(*outer) + ", needs ≥ " +
+                               FormatNumber(context.minimumOverlapMm, 0) + " mm");
+        outer = &part;
+        outerEnd = part.distalMm;
+      }
+    }
   for (const OstiumCoverage& o : c.ostia)
     if (o.covered)
-      c.findings.push_back(o.branch + " ostium covered by the graft (" + FormatNumber(o.overlapMm) + " mm)");
+      c.findings.push_back(o.branch + " ostium covered by the deployed graft (" + Mm(o.overlapMm) + " of it on " +
+                           o.parent + ")");
+  for (const ConfigurationFinding& f : context.configurationFindings)
+    c.findings.push_back(f.text + " — option: " + f.option);
   return c;
 }
 
-std::vector<Measurement> FitCheckRows(const FitCheck& c, const StentMesh& mesh)
+std::vector<Measurement> FitCheckRows(const FitCheck& c, const DeployedGraft& graft)
 {
+  const StentMesh& mesh = graft.layout.mesh;
   const double top = mesh.ringAbscissaMm[TrunkSegment].front();
   const double rightEnd = mesh.ringAbscissaMm[RightLegSegment].back(),
                leftEnd = mesh.ringAbscissaMm[LeftLegSegment].back();
   const std::string over = c.oversizingWall == "outer"   ? "outer wall"
                            : c.oversizingWall == "lumen" ? "lumen"
                                                          : "outer wall where traced, else lumen";
+  const auto estimated = [&](int zone)
+  {
+    return c.sealOnLumenOnly[std::size_t(zone)] ? "; estimated (lumen): the outer wall not traced under part of it"
+                                                : "";
+  };
   std::vector<Measurement> rows = {
     { "proximalSealLength", c.proximalSealLengthMm, "mm",
-      "simulated graft: length from its top down to the first ring not in contact with the lumen wall", "aorta", top },
+      std::string("simulated graft: sealed length from its proximal edge down, on healthy wall (apposed, thrombus ") +
+        "under 2 mm, outer diameter within 10 % of (a))" + estimated(0),
+      "aorta", top },
     { "rightIliacSealLength", c.rightIliacSealLengthMm, "mm",
-      "simulated graft: length from the right leg's distal end up to the first ring not in contact with the lumen wall",
+      std::string("simulated graft: sealed length from the right distal edge up, on healthy wall") + estimated(1),
       "rightIliac", rightEnd },
     { "leftIliacSealLength", c.leftIliacSealLengthMm, "mm",
-      "simulated graft: length from the left leg's distal end up to the first ring not in contact with the lumen wall",
+      std::string("simulated graft: sealed length from the left distal edge up, on healthy wall") + estimated(2),
       "leftIliac", leftEnd },
     { "proximalOversizing", c.proximalOversizingPercent, "%",
-      "main body diameter over (a) at the graft's top, minus 1, " + over, "aorta", top },
+      "main body diameter over the vessel at the graft's proximal edge, minus 1, " + over, "aorta", top },
     { "rightLimbOversizing", c.rightLimbOversizingPercent, "%",
       "right limb diameter over the common iliac's landing zone diameter, minus 1, " + over, "rightIliac", rightEnd },
     { "leftLimbOversizing", c.leftLimbOversizingPercent, "%",
       "left limb diameter over the common iliac's landing zone diameter, minus 1, " + over, "leftIliac", leftEnd },
   };
   for (std::size_t i = 0; i < rows.size(); ++i)
+  {
     rows[i].wall = i < 3 ? "lumen" : c.oversizingWall == "mixed" ? "outer" : c.oversizingWall;
+    rows[i].estimated = i < 3 && c.sealOnLumenOnly[i];
+  }
   return rows;
 }
 

@@ -1,43 +1,73 @@
 /// \file FitCheck.h
-/// Whether the simulated stent graft fits: where it seals, how much it is oversized, whether it
-/// covers an ostium (Egger et al. 2007, section 2: "It hereby becomes apparent if the dimensions
-/// of the bifurcated stent graft are exact … and no ostium was covered"; evar-sizing.md §2.3).
+/// Whether the simulated stent graft fits: where it seals on healthy wall, how much it is
+/// oversized, whether its components overlap enough, whether it covers an ostium (Egger et al.
+/// 2007, section 2: "It hereby becomes apparent if the dimensions of the bifurcated stent graft are
+/// exact … and no ostium was covered"; evar-sizing.md §2.3; device-configuration.md §1.7, §2.4).
 ///
-/// Input: the StentMesh both fits used; the graft's surface after the simulate-mode fit with the
-/// device's nominal radii (V and the signed wall distance φ per vertex, LPS mm); the measurements
-/// read off the measure-mode fit of the same mesh (their ring profiles give the vessel diameter
-/// under every ring); the labelled centerlines (for the ostia); the device's nominal diameters.
+/// Input: the deployed graft (DeployGraft.h: its layout — each vertex's component, side, path
+/// position and nominal radius — and its fitted surface with the signed wall distance φ per
+/// vertex, LPS mm); the measurements (their ring profiles give the lumen's diameter at every
+/// level, (a) the neck's); the labelled centerlines (the ostia); the traced vessel wall (thrombus,
+/// calcium and the outer diameter under every vertex), when there is one; the family's figures
+/// and the configuration's findings (FitCheckContext).
 ///
-/// Per vertex: **Oversizing** = (device diameter / vessel diameter at its ring − 1) × 100 %, the
-/// vessel diameter on the outer wall (the traced plane within a step of the ring, area-equivalent,
-/// as the IFU's oversizing is stated) where a `wall` is given and traced there, else the lumen's
-/// ring mean; `oversizingWall` says which the summary values used ("outer", "lumen", "mixed").
-/// Apposition and sealing are against the lumen: the graft presses on the thrombus, not through
-/// it;
-/// **Apposition** = the gap between the graft and the wall, max(0, −φ) mm (0: on the wall);
-/// **Sealing** = 1 where the vertex is within `contactToleranceMm` of the wall. A ring seals when
-/// at least `sealedRingFraction` of its vertices do.
-/// Seal zones: proximal, from the graft's top ring down to the first ring that does not seal;
-/// each iliac, from the leg's distal ring up to the first that does not — lengths along the
-/// centerline between those rings (so quantized by the ring spacing).
-/// Ostia: each labelled side branch (rightRenal, leftRenal, superiorMesenteric, coeliac on the
-/// aorta; rightInternalIliac, leftInternalIliac on the iliacs) whose ostium (FindBranchOstium)
-/// overlaps the graft's extent on its parent by more than `ostiumOverlapToleranceMm` is covered.
-/// Limbs not sized (a partial plan: the scan ends above the iliac landing zones): a NaN limb
-/// diameter; that leg was simulated only to carry the connection element, so its seal length and
-/// limb oversizing are NaN, its internal iliac ostium is not checked, and it has no findings
-/// (limbChecked says which sides were checked; Complete() whether both were).
-/// Findings (one line each; none = the fit check passed): oversizing outside
-/// [oversizingMinPercent, oversizingMaxPercent] at the proximal site or a limb's landing zone; a
-/// seal zone shorter than its minimum (proximal: migration and type Ia endoleak risk; iliac:
-/// type Ib); a covered ostium.
-/// Errors: InputError when the surface or the measurements do not belong to the mesh.
+/// Per vertex:
+///  - **Apposition** = the gap between the graft and the lumen wall, max(0, −φ) mm (0: on the
+///    wall); the graft presses on the thrombus, not through it;
+///  - **HealthyWall** = 1 where the wall under the vertex is healthy: the thrombus between lumen
+///    and outer wall along the vertex's ray (VesselWall) at most `maxThrombusMm` (2 mm,
+///    vessel-wall.md), and on the aorta the outer wall's smallest width at that level at most
+///    (1 + neckDilationPercent) × (a) (aneurysmal wall does not seal: the neck-length rule); 0
+///    where it is not; −1 where the outer wall was not traced under it (no fat around it there):
+///    then the seal is judged on apposition alone and every seal length through such a vertex is
+///    marked estimated (lumen);
+///  - **Calcified** = 1 where the vertex's ray crosses calcium (0 none, −1 not traced); with
+///    `calciumSeals` (the default) it still seals, and the seal zone's calcified share is reported;
+///  - **Sealing** = 1 where the vertex is apposed (within `contactToleranceMm`) and the wall under
+///    it is healthy (or not traced);
+///  - **Oversizing** = (the component's nominal diameter there / the vessel's − 1) × 100 %, the
+///    vessel's on the outer wall (the traced plane within a step, area-equivalent, as the IFU's
+///    oversizing is stated) where traced, else the lumen's.
+/// A ring seals when at least `sealedRingFraction` of its vertices do.
+///
+/// Seal zones (lengths along the centerline, mm; a zone ends between its last sealing ring and the
+/// first that does not, where their shares of sealing vertices, interpolated linearly, cross
+/// sealedRingFraction — except the proximal zone where the wall turns unhealthy between those two
+/// rings: it ends at the first of the wall's planes (1 mm apart) there where more than
+/// 1 − sealedRingFraction of its rays are unhealthy):
+///  - **proximal**: from the graft's proximal edge (the trunk's first ring) down; with it the
+///    **shortest apposition length** (SAL, the post-EVAR literature's measure): the shortest, over
+///    the trunk's columns, of the continuous sealed length from the edge;
+///  - **iliac**: from each leg's distal edge up.
+/// Oversizing summaries: the main body's at the proximal edge; each limb's, the median over the
+/// leg's last 15 mm.
+///
+/// Findings (one line each, naming the component and the level; none = the fit check passed):
+///  - type Ia risk: proximal seal shorter than `minimumProximalSealMm` (10 mm), and why it ends;
+///  - type Ib risk: an iliac seal shorter than the family's minimum iliac seal;
+///  - type III risk: an overlap (limb in the gate or leg, extension in a limb) below the family's
+///    minimum — measured on the deployed positions;
+///  - infolding risk: oversizing over `infoldingPercent` (30 %) at the proximal edge or a landing
+///    zone; oversizing outside [oversizingMinPercent, oversizingMaxPercent] there;
+///  - an ostium the deployed graft covers: renal, superior mesenteric and coeliac on the aorta by
+///    the trunk's extent, each internal iliac by its leg's (FindBranchOstium, overlap beyond
+///    `ostiumOverlapToleranceMm`);
+///  - the configuration's findings (limb compression, the gate below the aortic bifurcation, a
+///    common iliac too short, an iliac too wide, …), each as it stands.
+/// Limbs not sized (a partial plan: the scan ends above the iliac landing zones): that leg was
+/// simulated only to carry the connection element, so its seal length and limb oversizing are
+/// NaN, its internal iliac ostium is not checked, and it has no findings (limbChecked says which
+/// sides were checked; Complete() whether both were).
+/// Errors: InputError when the fitted surface does not belong to the layout's mesh.
 #pragma once
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
+#include "Device/ConfigureDevice.h"
+#include "Device/DeployGraft.h"
 #include "Measurement/MeasureAnatomy.h"
 #include "Wall/VesselWall.h"
 
@@ -47,12 +77,26 @@ namespace sgp
 struct FitCheckParams
 {
   double contactToleranceMm = 1.0;    ///< a vertex this close to the wall touches it (one voxel)
-  double sealedRingFraction = 0.9;    ///< a ring seals when this share of its vertices touch
+  double sealedRingFraction = 0.9;    ///< a ring seals when this share of its vertices seal
+  double maxThrombusMm = 2.0;         ///< thicker thrombus under a vertex: it does not seal (vessel-wall.md)
+  double neckDilationPercent = 10.0;  ///< the aorta wider than (a) by more than this does not seal
+  bool calciumSeals = true;           ///< calcium under a vertex: it seals (flagged) when true
   double oversizingMinPercent = 10.0; ///< evar-sizing.md §2.3: 10–25 %
   double oversizingMaxPercent = 25.0;
-  double minimumProximalSealMm = 10.0; ///< shorter: migration risk
-  double minimumIliacSealMm = 10.0;
+  double infoldingPercent = 30.0;        ///< over this: infolding (device-configuration.md §2.3, SBC 2010)
+  double minimumProximalSealMm = 10.0;   ///< shorter: migration and type Ia endoleak risk
+  double minimumIliacSealMm = 10.0;      ///< used where the family gives none
   double ostiumOverlapToleranceMm = 0.5; ///< a graft edge at the ostium's edge does not cover it
+};
+
+/// What the fit check needs from the device and its configuration.
+struct FitCheckContext
+{
+  std::string family;
+  double minimumIliacSealMm = std::numeric_limits<double>::quiet_NaN(); ///< the family's (NaN: params')
+  double minimumOverlapMm = std::numeric_limits<double>::quiet_NaN();   ///< the family's (NaN: not checked)
+  std::vector<ConfigurationFinding> configurationFindings;
+  std::array<bool, 2> limbSized{ true, true }; ///< false: a partial plan's unsized leg
 };
 
 struct OstiumCoverage
@@ -69,10 +113,18 @@ struct FitCheck
 {
   Eigen::VectorXd oversizingPercent; ///< #V
   Eigen::VectorXd appositionMm;      ///< #V
+  Eigen::VectorXi healthyWall;       ///< #V, 1 healthy, 0 not (thrombus, aneurysmal), −1 not traced
+  Eigen::VectorXd thrombusUnderMm;   ///< #V, NaN where not traced
+  Eigen::VectorXi calcified;         ///< #V, 1, 0, −1 not traced
   Eigen::VectorXi sealing;           ///< #V, 0 or 1
   double proximalSealLengthMm = 0.0;
+  double shortestAppositionLengthMm = 0.0; ///< SAL over the trunk's columns
   double rightIliacSealLengthMm = 0.0;
   double leftIliacSealLengthMm = 0.0;
+  /// Each zone judged on apposition alone somewhere (the outer wall not traced there): estimated.
+  std::array<bool, 3> sealOnLumenOnly{ false, false, false }; ///< proximal, right, left
+  std::string proximalSealEnd;             ///< why the proximal seal ends, in words ("" when it runs to the end)
+  double proximalCalcifiedPercent = 0.0;   ///< share of the proximal seal zone's vertices over calcium
   double proximalOversizingPercent = 0.0;  ///< at the graft's top ring
   double rightLimbOversizingPercent = 0.0; ///< over the leg's distal 15 mm (median)
   double leftLimbOversizingPercent = 0.0;
@@ -88,19 +140,16 @@ struct FitCheck
   std::string CoveredOstia() const;
 };
 
-/// See the file comment. `graftDiametersMm`: trunk, right leg, left leg (StentSegment order);
-/// NaN for a limb not sized.
-FitCheck CheckGraftFit(const StentMesh& mesh,
-                       const Points& V,
-                       const Eigen::VectorXd& wallDistanceMm,
+/// See the file comment.
+FitCheck CheckGraftFit(const DeployedGraft& graft,
                        const Measurements& measured,
                        const CenterlineTree& tree,
-                       const std::array<double, 3>& graftDiametersMm,
-                       const FitCheckParams& params = {},
-                       const VesselWall* wall = nullptr);
+                       const VesselWall* wall,
+                       const FitCheckContext& context,
+                       const FitCheckParams& params = {});
 
 /// The fit check's numbers as table rows (Measurement: name, value, unit, definition, vessel,
 /// abscissa) — the CLI's return parameters of the same names.
-std::vector<Measurement> FitCheckRows(const FitCheck& check, const StentMesh& mesh);
+std::vector<Measurement> FitCheckRows(const FitCheck& check, const DeployedGraft& graft);
 
 } // namespace sgp

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <limits>
+#include <tuple>
 
 #include "Common/CheckRange.h"
 #include "Common/Errors.h"
 #include "Common/Format.h"
+#include "Common/Text.h"
 
 namespace sgp
 {
@@ -147,16 +149,19 @@ CriterionCheck AccessCheck(const std::string& name, const std::string& side, dou
   return CheckCriterion(name, diameterMm, profileFr / 3.0, NaN, "mm", CompactNumber(profileFr) + " Fr", label);
 }
 
-void AddAccessChecks(const SizingAnatomy& a, const DeviceFamily& family, FamilyEvaluation& e)
+void AddAccessChecks(const SizingAnatomy& a,
+                     const DeviceFamily& family,
+                     const DeviceSelectionParams& p,
+                     FamilyEvaluation& e)
 {
   const double right = a.rightAccessMinDiameterMm, left = a.leftAccessMinDiameterMm;
-  // The main body goes up the wider side (a measured side beats an unmeasured one).
-  const bool rightIpsi = !std::isnan(right) && (std::isnan(left) || right >= left);
-  const bool leftIpsi = !rightIpsi && !std::isnan(left);
-  e.mainBodyAccessSide = rightIpsi ? "right" : (leftIpsi ? "left" : "");
-  const double ipsiMm = rightIpsi ? right : (leftIpsi ? left : NaN);
-  const double contraMm = rightIpsi ? left : (leftIpsi ? right : NaN);
-  const std::string contraSide = rightIpsi ? "left" : (leftIpsi ? "right" : "");
+  e.ipsilateral =
+    ChooseIpsilateralSide(p.ipsilateralSide, { right, left }, { a.rightIliacTortuosity, a.leftIliacTortuosity });
+  const bool rightIpsi = e.ipsilateral.side == 0;
+  e.mainBodyAccessSide = rightIpsi ? "right" : "left";
+  const double ipsiMm = rightIpsi ? right : left;
+  const double contraMm = rightIpsi ? left : right;
+  const std::string contraSide = rightIpsi ? "left" : "right";
   const SizeChoice& contraLimb = rightIpsi ? e.leftLimb : e.rightLimb;
   const double bodyFr = e.mainBody.Chosen() ? e.mainBody.profileFr : LargestProfile(family.mainBodies.sizes);
   const double limbFr = contraLimb.Chosen() ? contraLimb.profileFr : LargestProfile(family.limbs.sizes);
@@ -184,6 +189,30 @@ void AddSideChecks(const std::string& side,
   e.checks.push_back(
     WithEvidence(CheckCriterion(side + " iliac seal length", sealMm, ifu.iliacSealLengthMm.min, NaN, "mm"),
                  ifu.iliacSealLengthMm.evidence));
+}
+
+/// The checks that read a diameter sized on the lumen become indeterminate (the IFU states the
+/// outer wall, which was not measured there), saying so.
+void MarkEstimatedChecks(FamilyEvaluation& e)
+{
+  const std::pair<const char*, std::vector<std::string>> readers[] = {
+    { "(a)", { "main body oversizing", "neck diameter" } },
+    { "(b)", { "neck diameter 15 mm below" } },
+    { "(e)", { "right iliac diameter", "right limb oversizing" } },
+    { "(f)", { "left iliac diameter", "left limb oversizing" } },
+  };
+  for (const auto& [level, names] : readers)
+  {
+    if (std::find(e.estimatedFromLumen.begin(), e.estimatedFromLumen.end(), level) == e.estimatedFromLumen.end())
+      continue;
+    for (CriterionCheck& check : e.checks)
+      if (std::find(names.begin(), names.end(), check.name) != names.end())
+      {
+        check.status = CheckStatus::Indeterminate;
+        check.text += "; " + std::string(level) +
+                      " sized on the lumen, the outer wall not traced there: estimated (lumen), indeterminate";
+      }
+  }
 }
 
 FamilyEvaluation EvaluateFamily(const SizingAnatomy& anatomy,
@@ -236,12 +265,14 @@ FamilyEvaluation EvaluateFamily(const SizingAnatomy& anatomy,
                    ifu.neckAngleAlphaDeg.evidence));
   AddSideChecks("right", a.rightIliacDiameterMm, a.rightIliacSealLengthMm, e.rightLimb, family, p, e);
   AddSideChecks("left", a.leftIliacDiameterMm, a.leftIliacSealLengthMm, e.leftLimb, family, p, e);
-  AddAccessChecks(a, family, e);
+  AddAccessChecks(a, family, p, e);
   if (!family.mainBodies.lengthToFlowDividerMm.empty())
     e.checks.push_back(WithEvidence(CheckCriterion("proximal site to bifurcation", a.proximalSiteToBifurcationLengthMm,
                                                    family.mainBodies.lengthToFlowDividerMm.front(), NaN, "mm",
                                                    "shortest main body to the flow divider"),
                                     family.mainBodies.evidence));
+  e.estimatedFromLumen = a.estimatedFromLumen;
+  MarkEstimatedChecks(e);
   return e;
 }
 
@@ -253,8 +284,20 @@ std::string ChoiceText(const std::string& what, const SizeChoice& c)
          (std::isnan(c.oversizingPercent) ? "" : " (" + QuantityText(c.oversizingPercent, "%") + ")");
 }
 
+/// How far a family's configuration is from one that can be ordered: 0 every constraint met (or
+/// no lengths were given to configure with), 1 a constraint failed (it can be ordered, its
+/// findings name what to weigh), 2 not configured (lengths unknown: nothing to order).
+int ConfigurationRank(const FamilyEvaluation& e, bool configuring)
+{
+  if (!configuring)
+    return 0;
+  if (!e.configuration.configured)
+    return 2;
+  return e.configuration.Feasible() ? 0 : 1;
+}
+
 /// Picks the recommendation among `s.families` and writes summary and reasons.
-void Recommend(DeviceSelection& s)
+void Recommend(DeviceSelection& s, bool configuring)
 {
   int best = -1;
   auto rank = [&](const FamilyEvaluation& e)
@@ -262,7 +305,7 @@ void Recommend(DeviceSelection& s)
     const double distance = e.mainBody.Chosen() && !std::isnan(e.mainBody.oversizingPercent)
                               ? std::abs(e.mainBody.oversizingPercent - s.proximalTargetPercent)
                               : std::numeric_limits<double>::infinity();
-    return std::make_pair(e.Count(CheckStatus::Indeterminate) > 0, distance);
+    return std::make_tuple(ConfigurationRank(e, configuring), e.Count(CheckStatus::Indeterminate) > 0, distance);
   };
   for (int i = 0; i < int(s.families.size()); ++i)
     if (s.forced || (s.families[size_t(i)].WithinIfu() && s.families[size_t(i)].mainBody.Chosen() &&
@@ -271,7 +314,10 @@ void Recommend(DeviceSelection& s)
   s.recommended = best;
   if (best < 0)
   {
-    s.summary = "no device within IFU";
+    const bool anyFail =
+      std::any_of(s.families.begin(), s.families.end(), [](const FamilyEvaluation& e) { return !e.WithinIfu(); });
+    s.ifuStatus = anyFail ? CheckStatus::Fail : CheckStatus::Indeterminate;
+    s.summary = anyFail ? "no device within IFU" : "no device sized";
     for (const FamilyEvaluation& e : s.families)
       for (const CriterionCheck& c : e.checks)
         if (c.status == CheckStatus::Fail)
@@ -284,13 +330,17 @@ void Recommend(DeviceSelection& s)
   const FamilyEvaluation& e = s.families[size_t(best)];
   s.recommendedWithinIfu = e.WithinIfu();
   s.recommendedFullyChecked = s.recommendedWithinIfu && e.Count(CheckStatus::Indeterminate) == 0;
+  s.ifuStatus = e.IfuStatus();
   const int fails = e.Count(CheckStatus::Fail), unknown = e.Count(CheckStatus::Indeterminate);
   std::string verdict = "within IFU";
   if (fails > 0)
     verdict = "OUTSIDE IFU (" + std::to_string(fails) + " failing check" + (fails > 1 ? "s" : "") + ")";
   if (unknown > 0)
     verdict += (fails > 0 ? ", " : " except ") + std::to_string(unknown) + " indeterminate check" +
-               (unknown > 1 ? "s" : "") + " (measurement missing)";
+               (unknown > 1 ? "s" : "") + (e.EstimatedOnLumen() ? "" : " (measurement missing)");
+  if (e.EstimatedOnLumen())
+    verdict = "estimated (lumen): sized on the lumen at " + JoinWithCommas(e.estimatedFromLumen) +
+              " where the outer wall was not traced; IFU " + (fails > 0 ? verdict : "indeterminate, " + verdict);
   s.summary = e.family + (s.forced ? " (forced)" : "") + ": " + ChoiceText("main body", e.mainBody) + ", " +
               ChoiceText("right limb", e.rightLimb) + ", " + ChoiceText("left limb", e.leftLimb) + "; " + verdict;
   for (const CriterionCheck& c : e.checks)
@@ -313,6 +363,13 @@ void CheckMeasurement(const std::string& name, double value, double lo, double h
 int FamilyEvaluation::Count(CheckStatus status) const
 {
   return int(std::count_if(checks.begin(), checks.end(), [&](const CriterionCheck& c) { return c.status == status; }));
+}
+
+CheckStatus FamilyEvaluation::IfuStatus() const
+{
+  if (Count(CheckStatus::Fail) > 0)
+    return CheckStatus::Fail;
+  return Count(CheckStatus::Indeterminate) > 0 ? CheckStatus::Indeterminate : CheckStatus::Pass;
 }
 
 double OversizingPercent(double deviceDiameterMm, double vesselDiameterMm)
@@ -380,12 +437,15 @@ void ValidateSizingAnatomy(const SizingAnatomy& a)
   CheckMeasurement("leftIliacSealLengthMm", a.leftIliacSealLengthMm, 0.0, big, false, "mm");
   CheckMeasurement("rightAccessMinDiameterMm", a.rightAccessMinDiameterMm, 0.0, big, true, "mm");
   CheckMeasurement("leftAccessMinDiameterMm", a.leftAccessMinDiameterMm, 0.0, big, true, "mm");
+  CheckMeasurement("rightIliacTortuosity", a.rightIliacTortuosity, 0.0, big, true, "");
+  CheckMeasurement("leftIliacTortuosity", a.leftIliacTortuosity, 0.0, big, true, "");
   CheckMeasurement("proximalSiteToBifurcationLengthMm", a.proximalSiteToBifurcationLengthMm, 0.0, big, false, "mm");
 }
 
 DeviceSelection SelectDevice(const SizingAnatomy& anatomy,
                              const DeviceCatalog& catalog,
-                             const DeviceSelectionParams& params)
+                             const DeviceSelectionParams& params,
+                             const ConfigurationAnatomy* lengths)
 {
   ValidateDeviceSelectionParams(params);
   ValidateSizingAnatomy(anatomy);
@@ -404,21 +464,93 @@ DeviceSelection SelectDevice(const SizingAnatomy& anatomy,
     for (int i = 0; i < int(catalog.families.size()); ++i)
       s.families.push_back(EvaluateFamily(anatomy, catalog, i, params, NaN));
   }
-  Recommend(s);
+  for (FamilyEvaluation& e : s.families)
+  {
+    if (!lengths)
+    {
+      e.configuration.family = e.family;
+      e.configuration.unknownReason = "no lengths were given to configure with";
+      continue;
+    }
+    const DeviceFamily& family = catalog.families[std::size_t(e.catalogIndex)];
+    ChosenDiameters chosen;
+    chosen.mainBodyMm = e.mainBody.diameterMm;
+    chosen.limbMm = { e.rightLimb.diameterMm, e.leftLimb.diameterMm };
+    chosen.limbOversizingMinPercent = params.limbOversizingMinPercent;
+    chosen.limbOversizingMaxPercent = params.limbOversizingMaxPercent;
+    ConfigurationAnatomy onWall = *lengths;
+    const SizingAnatomy a = anatomy.On(family.diameterReference);
+    onWall.iliacDiameterMm = { a.rightIliacDiameterMm, a.leftIliacDiameterMm };
+    e.configuration = ConfigureDevice(family, chosen, onWall, e.ipsilateral);
+    if (e.configuration.configured)
+    {
+      const std::vector<SizeAlternative> diameters = DiameterAlternatives(anatomy, family, e, params);
+      e.configuration.alternatives.insert(e.configuration.alternatives.begin(), diameters.begin(), diameters.end());
+    }
+  }
+  Recommend(s, lengths != nullptr);
   return s;
 }
 
 SizingAnatomy SizingAnatomy::On(DiameterReference reference) const
 {
   SizingAnatomy a = *this;
-  if (reference == DiameterReference::Lumen)
-  {
-    a.proximalNeckDiameterMm = proximalNeckLumenDiameterMm;
-    a.neckDiameter15mmMm = neckLumenDiameter15mmMm;
-    a.rightIliacDiameterMm = rightIliacLumenDiameterMm;
-    a.leftIliacDiameterMm = leftIliacLumenDiameterMm;
-  }
+  a.estimatedFromLumen.clear();
+  const std::tuple<const char*, double*, double> levels[] = {
+    { "(a)", &a.proximalNeckDiameterMm, proximalNeckLumenDiameterMm },
+    { "(b)", &a.neckDiameter15mmMm, neckLumenDiameter15mmMm },
+    { "(e)", &a.rightIliacDiameterMm, rightIliacLumenDiameterMm },
+    { "(f)", &a.leftIliacDiameterMm, leftIliacLumenDiameterMm },
+  };
+  for (const auto& [level, value, lumen] : levels)
+    if (reference == DiameterReference::Lumen)
+      *value = lumen;
+    else if (std::isnan(*value) && !std::isnan(lumen))
+    {
+      *value = lumen;
+      a.estimatedFromLumen.push_back(level);
+    }
   return a;
+}
+
+std::vector<SizeAlternative> DiameterAlternatives(const SizingAnatomy& anatomy,
+                                                  const DeviceFamily& family,
+                                                  const FamilyEvaluation& e,
+                                                  const DeviceSelectionParams& p)
+{
+  const SizingAnatomy a = anatomy.On(family.diameterReference);
+  const bool lumen = family.diameterReference == DiameterReference::Lumen || !a.estimatedFromLumen.empty();
+  const double uncertainty = lumen ? LumenDiameterUncertaintyMm : OuterDiameterUncertaintyMm;
+  std::vector<SizeAlternative> alternatives;
+  const auto consider = [&](const std::string& component, const std::string& level, const SizeChoice& chosen,
+                            const std::vector<DeviceSize>& sizes, double vesselMm, double lo, double hi)
+  {
+    if (!chosen.Chosen() || chosen.forced || !std::isfinite(vesselMm))
+      return;
+    for (double shift : { -uncertainty, uncertainty })
+    {
+      const SizeChoice other = ChooseDeviceSize(sizes, vesselMm + shift, lo, hi);
+      if (!other.Chosen() || other.diameterMm == chosen.diameterMm)
+        continue;
+      const std::string alternative = CompactNumber(other.diameterMm) + " mm";
+      if (std::any_of(alternatives.begin(), alternatives.end(),
+                      [&](const SizeAlternative& x)
+                      { return x.component == component && x.alternative == alternative; }))
+        continue;
+      alternatives.push_back({ component, CompactNumber(chosen.diameterMm) + " mm", alternative,
+                               "the " + component + " would be " + alternative + " if " + level + " were " +
+                                 QuantityText(vesselMm + shift, "mm") + " (measured " + QuantityText(vesselMm, "mm") +
+                                 ", uncertainty ±" + QuantityText(uncertainty, "mm") +
+                                 (lumen ? " on the lumen)" : " on the outer wall)") });
+    }
+  };
+  consider("main body", "(a)", e.mainBody, family.mainBodies.sizes, a.proximalNeckDiameterMm,
+           p.proximalOversizingMinPercent, p.proximalOversizingMaxPercent);
+  consider("right limb", "(e)", e.rightLimb, family.limbs.sizes, a.rightIliacDiameterMm, p.limbOversizingMinPercent,
+           p.limbOversizingMaxPercent);
+  consider("left limb", "(f)", e.leftLimb, family.limbs.sizes, a.leftIliacDiameterMm, p.limbOversizingMinPercent,
+           p.limbOversizingMaxPercent);
+  return alternatives;
 }
 
 SizingAnatomy SizingFromMeasurements(const Measurements& m)
@@ -439,6 +571,8 @@ SizingAnatomy SizingFromMeasurements(const Measurements& m)
   a.leftIliacSealLengthMm = m.Value("leftIliacLength");
   a.rightAccessMinDiameterMm = m.Value("rightAccessMinDiameter");
   a.leftAccessMinDiameterMm = m.Value("leftAccessMinDiameter");
+  a.rightIliacTortuosity = m.Value("rightIliacTortuosity");
+  a.leftIliacTortuosity = m.Value("leftIliacTortuosity");
   a.proximalSiteToBifurcationLengthMm = m.Value("proximalSiteToBifurcationLength");
   a.proximalNeckLengthUncertaintyMm = NeckLengthUncertaintyMm;
   return a;

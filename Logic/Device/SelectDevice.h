@@ -3,7 +3,11 @@
 /// wanted oversizing, the IFU check of the measured anatomy, and the recommended device.
 ///
 /// **Sizing.** Every diameter below is on the wall the family's catalogue entry names
-/// (`diameterReference`: outer wall for every shipped family; SizingAnatomy::On).
+/// (`diameterReference`: outer wall for every shipped family; SizingAnatomy::On). Where the outer
+/// wall was not traced at a sizing level (no fat around the vessel there) but the lumen was
+/// measured, that level is sized on the lumen and the family's sizes are an estimate
+/// (`estimatedFromLumen`): every check that reads such a value is indeterminate rather than pass
+/// or fail — the IFU states the outer wall, which was not measured.
 /// Oversizing = (device diameter / vessel diameter − 1) × 100 %. For each family the
 /// main body is the catalogue size whose oversizing of the proximal neck diameter is nearest the
 /// target — the middle of [proximalOversizingMinPercent, proximalOversizingMaxPercent] (15 % by
@@ -28,10 +32,11 @@
 ///
 /// **Recommendation.** Among families with no failing check and a chosen main body (a family
 /// whose main body could not be sized — its diameter not measured — has nothing to implant and is
-/// never recommended; `reasons` says so), those with no indeterminate check come first; within
+/// never recommended; `reasons` says so), those whose configuration meets every constraint come
+/// first (when configured: see SelectDevice below), then those with no indeterminate check; within
 /// that group the family whose main-body oversizing is nearest the target (ties in catalogue
-/// order). None: "no device within
-/// IFU", and `reasons` lists every failing check of every family. A forced device (--device
+/// order). None: "no device within IFU" when a family failed a check, "no device sized" when none
+/// could be judged, and `reasons` lists every failing check of every family. A forced device (--device
 /// "Family" or "Family:diameter") is the only family evaluated and is the recommendation, its
 /// main body that diameter (its oversizing check fails if outside the range), flagged when it
 /// is outside IFU.
@@ -49,6 +54,7 @@
 #include <string>
 #include <vector>
 
+#include "Device/ConfigureDevice.h"
 #include "Device/CriterionCheck.h"
 #include "Device/DeviceCatalog.h"
 #include "Measurement/MeasureAnatomy.h"
@@ -78,12 +84,20 @@ struct SizingAnatomy
   double leftIliacSealLengthMm = NotMeasured;             ///< ≥ 0
   double rightAccessMinDiameterMm = NotMeasured;          ///< minimum external iliac lumen diameter, > 0
   double leftAccessMinDiameterMm = NotMeasured;           ///< > 0
+  double rightIliacTortuosity = NotMeasured;              ///< centerline / chord length, > 0 (1 = straight)
+  double leftIliacTortuosity = NotMeasured;               ///< > 0
   double proximalSiteToBifurcationLengthMm = NotMeasured; ///< along the centerline, ≥ 0
   /// How far the measured neck length may lie from the true one, mm (≥ 0; 0 for an exact
   /// input): a neck-length margin within it is indeterminate — neither pass nor fail.
   double proximalNeckLengthUncertaintyMm = 0.0;
   /// A copy whose four sizing diameters (the fields without "Lumen") are those on `reference`.
+  /// On the outer wall, a diameter whose outer value was not measured (no outer wall traced at
+  /// that level) but whose lumen value was takes the lumen's, and `estimatedFromLumen` names it
+  /// ("(a)", "(b)", "(e)", "(f)"): sized on the lumen, estimated.
   SizingAnatomy On(DiameterReference reference) const;
+  /// The levels whose sizing diameter On() took from the lumen because the outer wall was not
+  /// traced there (empty on the wall the family names, or when every outer value was measured).
+  std::vector<std::string> estimatedFromLumen;
 };
 
 struct DeviceSelectionParams
@@ -95,6 +109,8 @@ struct DeviceSelectionParams
   /// Empty: evaluate every family. "Family" (case-insensitive) or "Family:diameter" (mm, one of
   /// the family's main-body diameters to within 0.05 mm).
   std::string forcedDevice;
+  /// The side the main body goes up (ChooseIpsilateralSide): its access check and configuration.
+  IpsilateralSide ipsilateralSide = IpsilateralSide::Auto;
 };
 
 /// One chosen catalogue size, or none.
@@ -115,10 +131,21 @@ struct FamilyEvaluation
   SizeChoice mainBody;
   SizeChoice rightLimb;
   SizeChoice leftLimb;
-  std::string mainBodyAccessSide; ///< "right", "left", or "" when neither access was measured
+  std::string mainBodyAccessSide; ///< "right" or "left" (ChooseIpsilateralSide)
+  SideChoice ipsilateral;         ///< the same as a side index, with the reason
   std::vector<CriterionCheck> checks;
+  /// The levels sized on the lumen because the outer wall was not traced there (SizingAnatomy::On);
+  /// non-empty: every size of this family is an estimate, "estimated (lumen)".
+  std::vector<std::string> estimatedFromLumen;
+  /// The components with their lengths (ConfigureDevice), when SelectDevice was given the lengths
+  /// and a main body was chosen; else not configured, with the reason.
+  DeviceConfiguration configuration;
   int Count(CheckStatus status) const;
   bool WithinIfu() const { return Count(CheckStatus::Fail) == 0; }
+  /// A check failed on a measured value: "fail"; else an indeterminate check (a value not
+  /// measured, within its uncertainty, or sized on the lumen): "indeterminate"; else "pass".
+  CheckStatus IfuStatus() const;
+  bool EstimatedOnLumen() const { return !estimatedFromLumen.empty(); }
 };
 
 struct DeviceSelection
@@ -128,6 +155,9 @@ struct DeviceSelection
   bool forced = false;
   bool recommendedWithinIfu = false;    ///< no failing check
   bool recommendedFullyChecked = false; ///< and no indeterminate check
+  /// The IFU result: the recommended family's IfuStatus(); with no recommendation, "fail" when every
+  /// family failed a check on measured values, else "indeterminate" (no family could be judged).
+  CheckStatus ifuStatus = CheckStatus::Indeterminate;
   double proximalTargetPercent = 0.0;
   double limbTargetPercent = 0.0;
   /// One line, e.g. "Endurant II: main body 25 mm (13.6 %), right limb 16 mm (14.3 %), left
@@ -162,8 +192,24 @@ void ValidateDeviceSelectionParams(const DeviceSelectionParams& params);
 ///         and not in its documented range.
 void ValidateSizingAnatomy(const SizingAnatomy& anatomy);
 
+/// See the file comment. With `lengths`, every family whose main body was chosen is also
+/// configured (ConfigureDevice: the lengths from `lengths`, the ipsilateral side from
+/// `params.ipsilateralSide`), and the recommendation prefers, before the rest of its ranking, a
+/// family whose configuration has every constraint met, then one with failed constraints (it can
+/// be ordered; its findings name the options), then one that could not be configured (lengths
+/// unknown: nothing to order).
 DeviceSelection SelectDevice(const SizingAnatomy& anatomy,
                              const DeviceCatalog& catalog,
-                             const DeviceSelectionParams& params = {});
+                             const DeviceSelectionParams& params = {},
+                             const ConfigurationAnatomy* lengths = nullptr);
+
+/// Where the uncertainty of a measured diameter ((a) for the main body, (e)/(f) for the limbs;
+/// LumenDiameterUncertaintyMm or OuterDiameterUncertaintyMm by the wall the family sizes on)
+/// straddles a size boundary of `family`: the size chosen at the value ± the uncertainty when it
+/// differs from `evaluation`'s.
+std::vector<SizeAlternative> DiameterAlternatives(const SizingAnatomy& anatomy,
+                                                  const DeviceFamily& family,
+                                                  const FamilyEvaluation& evaluation,
+                                                  const DeviceSelectionParams& params);
 
 } // namespace sgp

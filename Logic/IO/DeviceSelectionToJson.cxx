@@ -49,8 +49,22 @@ Json FamilyToJson(const FamilyEvaluation& e)
   Json checks = Json::array();
   for (const CriterionCheck& c : e.checks)
     checks.push_back(CheckToJson(c));
+  Json findings = Json::array();
+  for (const ConfigurationFinding& f : e.configuration.findings)
+    findings.push_back(f.text);
+  const Json configuration = { { "configured", e.configuration.configured },
+                               { "unknownReason", TextOrNull(e.configuration.unknownReason) },
+                               { "orderList", e.configuration.OrderList() },
+                               { "feasible", e.configuration.Feasible() },
+                               { "findings", findings } };
   return { { "name", e.family },
            { "withinIfu", e.WithinIfu() },
+           { "ifuStatus", ToString(e.IfuStatus()) },
+           { "estimated", e.EstimatedOnLumen() ? Json("lumen") : Json(nullptr) },
+           { "estimatedLevels", e.estimatedFromLumen },
+           { "ipsilateralSide", e.ipsilateral.side == 0 ? "right" : "left" },
+           { "ipsilateralReason", e.ipsilateral.reason },
+           { "configuration", configuration },
            { "failCount", e.Count(CheckStatus::Fail) },
            { "indeterminateCount", e.Count(CheckStatus::Indeterminate) },
            { "mainBody", SizeToJson(e.mainBody) },
@@ -87,6 +101,9 @@ nlohmann::json DeviceSelectionToJson(const DeviceSelection& s)
   const bool any = s.recommended >= 0 && s.recommended < int(s.families.size());
   Json recommendation = { { "family", any ? Json(s.families[size_t(s.recommended)].family) : Json(nullptr) },
                           { "withinIfu", s.recommendedWithinIfu },
+                          { "ifuStatus", ToString(s.ifuStatus) },
+                          { "estimated", any && s.families[size_t(s.recommended)].EstimatedOnLumen() ? Json("lumen")
+                                                                                                     : Json(nullptr) },
                           { "fullyChecked", s.recommendedFullyChecked },
                           { "summary", s.summary },
                           { "reasons", s.reasons } };

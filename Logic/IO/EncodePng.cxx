@@ -81,4 +81,35 @@ std::string PngDataUri(const PlaneImage& image, double lowHu, double highHu)
   return "data:image/png;base64," + Base64(EncodeGreyPng(image, lowHu, highHu));
 }
 
+std::string EncodeRgbPng(const RenderedImage& image)
+{
+  if (image.width <= 0 || image.height <= 0 ||
+      image.rgb.size() != static_cast<size_t>(image.width) * static_cast<size_t>(image.height) * 3)
+    throw InputError("An RGB PNG needs a non-empty image; got " + std::to_string(image.width) + " x " +
+                     std::to_string(image.height) + " pixels with " + std::to_string(image.rgb.size()) + " bytes.");
+  vtkNew<vtkImageData> data;
+  data->SetDimensions(image.width, image.height, 1);
+  data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* out = static_cast<unsigned char*>(data->GetScalarPointer());
+  const size_t rowBytes = static_cast<size_t>(image.width) * 3;
+  for (int row = 0; row < image.height; ++row) // VTK's rows run upward
+    std::copy_n(image.rgb.data() + static_cast<size_t>(row) * rowBytes, rowBytes,
+                out + static_cast<size_t>(image.height - 1 - row) * rowBytes);
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(data);
+  writer->WriteToMemoryOn();
+  writer->Write();
+  vtkUnsignedCharArray* bytes = writer->GetResult();
+  if (!bytes || bytes->GetNumberOfValues() == 0)
+    throw std::runtime_error("VTK's PNG writer produced no bytes for a " + std::to_string(image.width) + " x " +
+                             std::to_string(image.height) + " RGB image.");
+  return std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)),
+                     static_cast<size_t>(bytes->GetNumberOfValues()));
+}
+
+std::string PngDataUri(const RenderedImage& image)
+{
+  return "data:image/png;base64," + Base64(EncodeRgbPng(image));
+}
+
 } // namespace sgp

@@ -41,6 +41,8 @@ std::string JsonTypeWords(nlohmann::json::value_t type)
       return "a string";
     case Json::value_t::array:
       return "an array";
+    case Json::value_t::boolean:
+      return "true or false";
     default:
       return "an object";
   }

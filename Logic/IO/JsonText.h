@@ -15,7 +15,8 @@ namespace sgp
 /// "the string \"23\"", "the number 23", "an array [...]", "null" — at most 40 characters of it.
 std::string DescribeJsonValue(const nlohmann::json& value);
 
-/// "a number", "a string", "an array" or "an object": what a field of that type must be.
+/// "a number", "a string", "an array", "true or false" or "an object": what a field of that type
+/// must be.
 std::string JsonTypeWords(nlohmann::json::value_t type);
 
 /// What is wrong with `object[key]` as a field of `type` (any number for number_float): "is

@@ -31,11 +31,15 @@ public:
   }
 
   void SetName(const std::string& name) { m_Name = name; }
+  /// Later messages name this component ("mainBodies.items[3] ETBF2313C124E") before the field.
+  void SetComponent(const std::string& label) { m_Component = label; }
 
   [[noreturn]] void Fail(const std::string& field, const std::string& seen, const std::string& expected) const
   {
-    throw InputError(DescribeCatalogField(m_Origin, m_Index, m_Name, field) + ": " + seen + "; expected " + expected +
-                     "; correct the entry.");
+    std::string where = DescribeCatalogField(m_Origin, m_Index, m_Name, field);
+    if (!m_Component.empty())
+      where.insert(where.rfind(", field '"), ", component " + m_Component);
+    throw InputError(where + ": " + seen + "; expected " + expected + "; correct the entry.");
   }
 
   /// Rejects fields other than `allowed` in `object` (found at `path`).
@@ -99,52 +103,129 @@ private:
   std::string m_Origin;
   int m_Index;
   std::string m_Name;
+  std::string m_Component;
 };
 
-std::vector<DeviceSize> ReadSizes(const EntryReader& r, const Json& component, const std::string& path)
+/// A required field that is a number or null (not found in any public source): NaN for null.
+double NumberOrNull(const EntryReader& r, const Json& object, const std::string& path, const std::string& key)
 {
-  const Json& sizes = r.Array(component, path, "sizes");
-  std::vector<DeviceSize> result;
-  for (size_t i = 0; i < sizes.size(); ++i)
-  {
-    const std::string item = path + ".sizes[" + std::to_string(i) + "]";
-    const Json& size = r.ObjectAt(sizes, path + ".sizes", i);
-    r.OnlyKeys(size, item, { "diameterMm", "profileFr" });
-    result.push_back({ r.Number(size, item, "diameterMm"), r.Number(size, item, "profileFr") });
-  }
-  return result;
+  if (object.contains(key) && object.at(key).is_null())
+    return std::numeric_limits<double>::quiet_NaN();
+  const std::string mismatch = JsonMemberMismatch(object, key, Json::value_t::number_float);
+  if (!mismatch.empty())
+    r.Fail(EntryReader::Join(path, key), mismatch, "a number, or null when no public source gives it");
+  return object.at(key).get<double>();
 }
 
-DeviceComponent ReadComponent(const EntryReader& r, const Json& family, const std::string& key, bool mainBody)
+std::vector<FigureConflict> ReadConflicts(const EntryReader& r, const Json& item, const std::string& path)
 {
-  const Json& json = r.Object(family, "", key);
-  std::vector<std::string> allowed = { "sizes", "lengthRangeMm", "evidence" };
-  if (mainBody)
-    allowed.push_back("lengthToFlowDividerMm");
-  r.OnlyKeys(json, key, allowed);
-  DeviceComponent c;
-  c.sizes = ReadSizes(r, json, key);
-  c.evidence = r.Text(json, key, "evidence");
-  if (json.contains("lengthRangeMm"))
+  std::vector<FigureConflict> conflicts;
+  if (!item.contains("conflicts"))
+    return conflicts;
+  const Json& array = r.Array(item, path, "conflicts");
+  for (size_t i = 0; i < array.size(); ++i)
   {
-    const std::string path = key + ".lengthRangeMm";
-    const Json& range = r.Object(json, key, "lengthRangeMm");
-    r.OnlyKeys(range, path, { "min", "max" });
-    c.lengthMinMm = r.Number(range, path, "min");
-    c.lengthMaxMm = r.Number(range, path, "max");
-  }
-  if (json.contains("lengthToFlowDividerMm"))
-  {
-    const Json& lengths = r.Array(json, key, "lengthToFlowDividerMm");
-    for (size_t i = 0; i < lengths.size(); ++i)
+    const std::string at = EntryReader::Join(path, "conflicts[" + std::to_string(i) + "]");
+    const Json& json = r.ObjectAt(array, EntryReader::Join(path, "conflicts"), i);
+    r.OnlyKeys(json, at, { "field", "values", "note" });
+    FigureConflict conflict;
+    conflict.field = r.Text(json, at, "field", true);
+    conflict.note = r.Text(json, at, "note");
+    const Json& values = r.Array(json, at, "values");
+    for (size_t k = 0; k < values.size(); ++k)
     {
-      if (!lengths[i].is_number())
-        r.Fail(key + ".lengthToFlowDividerMm[" + std::to_string(i) + "]", "is " + DescribeJsonValue(lengths[i]),
-               "a number");
-      c.lengthToFlowDividerMm.push_back(lengths[i].get<double>());
+      if (!values[k].is_number())
+        r.Fail(at + ".values[" + std::to_string(k) + "]", "is " + DescribeJsonValue(values[k]), "a number");
+      conflict.values.push_back(values[k].get<double>());
     }
+    conflicts.push_back(conflict);
   }
+  return conflicts;
+}
+
+/// One component of a group (`key`: mainBodies, limbs, iliacExtensions, aorticCuffs); messages
+/// name it as "component <key>.items[i] <code>" and the field by its own name.
+CatalogueComponent ReadItem(const EntryReader& group,
+                            const Json& items,
+                            const std::string& key,
+                            size_t i,
+                            ComponentRole role,
+                            const std::string& groupName,
+                            const std::string& groupEvidence)
+{
+  const Json& json = group.ObjectAt(items, key + ".items", i);
+  CatalogueComponent c;
+  c.role = role;
+  c.index = int(i);
+  EntryReader r = group;
+  r.SetComponent(c.Label());
+  if (!json.contains("code"))
+    r.Fail("code", "is missing", "the catalogue code, or null when it is not public");
+  if (!json.at("code").is_null())
+  {
+    c.code = r.Text(json, "", "code", true);
+    if (TrimBlanks(c.code).empty())
+      r.Fail("code", "is empty", "the catalogue code, or null when it is not public");
+    r.SetComponent(c.Label());
+  }
+  const bool body = role == ComponentRole::MainBody;
+  std::vector<std::string> allowed = { "name",      "code",     "diameterMm", "distalDiameterMm", "lengthMm",
+                                       "profileFr", "evidence", "note",       "conflicts" };
+  if (body)
+    allowed.insert(allowed.end(), { "flowDividerMm", "gateEndMm", "gateDiameterMm", "crotchWidthMm" });
+  r.OnlyKeys(json, "", allowed);
+  c.name = json.contains("name") ? r.Text(json, "", "name") : groupName;
+  c.diameterMm = NumberOrNull(r, json, "", "diameterMm");
+  c.distalDiameterMm = NumberOrNull(r, json, "", "distalDiameterMm");
+  c.lengthMm = NumberOrNull(r, json, "", "lengthMm");
+  c.profileFr = NumberOrNull(r, json, "", "profileFr");
+  if (body)
+  {
+    c.flowDividerMm = NumberOrNull(r, json, "", "flowDividerMm");
+    c.gateEndMm = NumberOrNull(r, json, "", "gateEndMm");
+    c.gateDiameterMm = NumberOrNull(r, json, "", "gateDiameterMm");
+    c.crotchWidthMm = NumberOrNull(r, json, "", "crotchWidthMm");
+  }
+  c.evidence = json.contains("evidence") ? r.Text(json, "", "evidence") : groupEvidence;
+  c.note = r.Text(json, "", "note");
+  c.conflicts = ReadConflicts(r, json, "");
   return c;
+}
+
+/// A group of components of one role: { "name", "evidence", "items": [ … ] }; `required` groups
+/// need at least one item.
+void ReadGroup(const EntryReader& r, const Json& family, ComponentRole role, bool required, DeviceFamily& out)
+{
+  const std::string key = GroupKey(role);
+  if (!required && !family.contains(key))
+    return;
+  const Json& json = r.Object(family, "", key);
+  r.OnlyKeys(json, key, { "name", "evidence", "items" });
+  const std::string name = r.Text(json, key, "name");
+  const std::string evidence = r.Text(json, key, "evidence");
+  const Json& items = r.Array(json, key, "items");
+  if (items.empty())
+    r.Fail(key + ".items", "is empty", "at least one component");
+  for (size_t i = 0; i < items.size(); ++i)
+    out.components.push_back(ReadItem(r, items, key, i, role, name, evidence));
+}
+
+/// The junctions: overlapMm {min, max} and gateClearanceMm {min}, each number or null.
+ComponentJunctions ReadJunctions(const EntryReader& r, const Json& family)
+{
+  const Json& json = r.Object(family, "", "junctions");
+  r.OnlyKeys(json, "junctions", { "overlapMm", "gateClearanceMm" });
+  ComponentJunctions junctions;
+  const Json& overlap = r.Object(json, "junctions", "overlapMm");
+  r.OnlyKeys(overlap, "junctions.overlapMm", { "min", "max", "evidence" });
+  junctions.overlapMm.min = NumberOrNull(r, overlap, "junctions.overlapMm", "min");
+  junctions.overlapMm.max = NumberOrNull(r, overlap, "junctions.overlapMm", "max");
+  junctions.overlapMm.evidence = r.Text(overlap, "junctions.overlapMm", "evidence");
+  const Json& clearance = r.Object(json, "junctions", "gateClearanceMm");
+  r.OnlyKeys(clearance, "junctions.gateClearanceMm", { "min", "evidence" });
+  junctions.gateClearanceMm.min = NumberOrNull(r, clearance, "junctions.gateClearanceMm", "min");
+  junctions.gateClearanceMm.evidence = r.Text(clearance, "junctions.gateClearanceMm", "evidence");
+  return junctions;
 }
 
 /// One IFU limit object with the given bound keys ("min", "max") and an optional evidence.
@@ -202,7 +283,9 @@ DeviceFamily ReadFamily(const std::string& origin, const Json& families, size_t 
   DeviceFamily family;
   family.name = r.Text(json, "", "name", true);
   r.SetName(family.name);
-  r.OnlyKeys(json, "", { "name", "manufacturer", "source", "note", "diameterReference", "mainBodies", "limbs", "ifu" });
+  r.OnlyKeys(json, "",
+             { "name", "manufacturer", "source", "note", "verified", "diameterReference", "mainBodies", "limbs",
+               "iliacExtensions", "aorticCuffs", "junctions", "ifu" });
   family.manufacturer = r.Text(json, "", "manufacturer");
   family.source = r.Text(json, "", "source", true);
   family.note = r.Text(json, "", "note");
@@ -211,8 +294,13 @@ DeviceFamily ReadFamily(const std::string& origin, const Json& families, size_t 
     r.Fail("diameterReference", "is \"" + reference + "\"",
            "\"outerWall\" or \"lumen\" (the diameter its IFU ranges use)");
   family.diameterReference = reference == "lumen" ? DiameterReference::Lumen : DiameterReference::OuterWall;
-  family.mainBodies = ReadComponent(r, json, "mainBodies", true);
-  family.limbs = ReadComponent(r, json, "limbs", false);
+  family.verified = r.Member(json, "", "verified", Json::value_t::boolean).get<bool>();
+  ReadGroup(r, json, ComponentRole::MainBody, true, family);
+  ReadGroup(r, json, ComponentRole::Limb, true, family);
+  ReadGroup(r, json, ComponentRole::IliacExtension, false, family);
+  ReadGroup(r, json, ComponentRole::AorticCuff, false, family);
+  DeriveSizesFromComponents(family);
+  family.junctions = ReadJunctions(r, json);
   family.ifu = ReadIfu(r, json);
   return family;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <map>
 #include <sstream>
@@ -9,7 +10,10 @@
 #include "Common/Format.h"
 #include "Common/Median.h"
 #include "IO/EncodePng.h"
+#include "Pipeline/OrderListText.h"
 #include "Pipeline/PlanValues.h"
+#include "Pipeline/ValueText.h"
+#include "Views/SceneMeshes.h"
 
 namespace sgp
 {
@@ -50,6 +54,22 @@ std::string Num(double value, int decimals = 1)
 std::string C(double value)
 {
   return FormatNumber(value, 2);
+}
+
+/// A value cell a person reads: the value at clinical precision (ValueText.h), its return-file
+/// text (full precision) in data-value, its return parameter's name in data-name.
+std::string ValueCell(const std::string& name, double value, const std::string& unit, const std::string& returned)
+{
+  return "<td class=\"num\" data-name=\"" + Escape(name) + "\" data-value=\"" + Escape(returned) + "\">" +
+         Escape(ClinicalText(value, unit)) + "</td>";
+}
+
+std::string Rgb(const Eigen::Vector3d& rgb)
+{
+  char buffer[16];
+  std::snprintf(buffer, sizeof(buffer), "#%02x%02x%02x", int(std::lround(255 * rgb[0])), int(std::lround(255 * rgb[1])),
+                int(std::lround(255 * rgb[2])));
+  return buffer;
 }
 
 const char* const Css = R"(
@@ -142,35 +162,81 @@ void Summary(const RepairPlan& plan, const std::map<std::string, PlanValue>& val
   out << "</li></ul></div>\n";
 }
 
-const char* LevelOf(const std::string& name)
-{
-  static const std::map<std::string, const char*> levels = {
-    { "proximalNeckDiameter", "(a)" },  { "proximalNeckLumenDiameter", "(a)" },
-    { "neckDiameter15mm", "(b)" },      { "neckLumenDiameter15mm", "(b)" },
-    { "maxAneurysmDiameter", "(c)" },   { "maxAneurysmLumenDiameter", "(c)" },
-    { "distalNeckMinDiameter", "(d)" }, { "distalNeckMinLumenDiameter", "(d)" },
-    { "rightIliacDiameter", "(e)" },    { "rightIliacLumenDiameter", "(e)" },
-    { "leftIliacDiameter", "(f)" },     { "leftIliacLumenDiameter", "(f)" }
-  };
-  const auto found = levels.find(name);
-  return found == levels.end() ? "" : found->second;
-}
-
 void MeasurementTable(const RepairPlan& plan, const std::map<std::string, PlanValue>& values, std::ostream& out)
 {
-  out << "<h2>Measurements</h2>\n<table><tr><th></th><th>value</th><th>unit</th><th>wall</th><th>definition</th></tr>";
+  out << "<h2>Measurements</h2>\n<table><tr><th>measurement</th><th>value</th><th>wall</th><th>definition</th></tr>";
   for (const Measurement& m : plan.measurements.values)
   {
     const auto v = values.find(m.name);
     const std::string text =
       v != values.end() ? v->second.text : (std::isfinite(m.value) ? FormatReturnValue(m.value) : "-1");
     const bool measured = v != values.end() ? v->second.measured : std::isfinite(m.value);
-    out << "<tr><td>" << LevelOf(m.name) << " " << Escape(m.name) << "</td><td class=\"num\" data-name=\""
-        << Escape(m.name) << "\">" << Escape(text) << "</td><td>" << Escape(m.unit) << "</td><td>"
+    out << "<tr><td>" << Escape(ValueLabel(m.name)) << "</td>" << ValueCell(m.name, m.value, m.unit, text) << "<td>"
         << (m.wall.empty() ? "" : Escape(m.wall)) << (m.estimated ? " (estimated)" : "") << "</td><td class=\"def\">"
-        << Escape(m.definition) << (measured ? "" : " <b>Not measured (−1).</b>") << "</td></tr>";
+        << Escape(m.definition) << (measured ? "" : " <b>Not measured.</b>") << "</td></tr>";
   }
   out << "</table>\n";
+}
+
+/// The order list (issue 29): the components to order, where each lies, the anatomy's lengths
+/// they were chosen from, and what could not be met.
+void OrderSection(const RepairPlan& plan, const std::map<std::string, PlanValue>& values, std::ostream& out)
+{
+  out << "<h2 id=\"order\">Order list</h2>\n";
+  const DeviceConfiguration* c = plan.Configuration();
+  out << "<p>Lengths along the centerlines: " << Escape(AnatomyLengthsText(plan)) << ".</p>";
+  if (!c)
+  {
+    out << "<p>No main body was sized, so there is nothing to order.</p>\n";
+    return;
+  }
+  const std::vector<std::string> lines = OrderLines(plan);
+  out << "<p><b>" << Escape(lines.empty() ? c->family : lines.front()) << "</b></p>";
+  out << "<p class=\"def\">One line: <span data-name=\"orderList\">" << Escape(values.at("orderList").text)
+      << "</span></p>";
+  if (!c->configured)
+  {
+    out << "<p class=\"indeterminate\">The components' lengths are not configured: " << Escape(c->unknownReason)
+        << ".</p>\n";
+    return;
+  }
+  out << "<table><tr><th>component</th><th>catalogue code</th><th>diameter (mm)</th><th>length</th>"
+         "<th>lies (mm below the proximal edge)</th></tr>";
+  for (const ConfiguredComponent& part : c->components)
+  {
+    const std::string role =
+      part.role == OrderRole::MainBody         ? "main body"
+      : part.role == OrderRole::IliacExtension ? std::string(part.side == 0 ? "right" : "left") + " iliac extension"
+      : part.role == OrderRole::AorticCuff
+        ? "aortic cuff"
+        : std::string(part.side == 0 ? "right" : "left") +
+            (part.role == OrderRole::IpsilateralLimb ? " ipsilateral limb" : " contralateral limb");
+    const std::string name = part.role == OrderRole::MainBody ? "mainBodyLength"
+                             : part.role == OrderRole::IliacExtension || part.role == OrderRole::AorticCuff
+                               ? ""
+                               : (part.side == 0 ? "rightLimbLength" : "leftLimbLength");
+    out << "<tr><td><span style=\"color:" << Rgb(ComponentColour(part)) << "\">&#9632;</span> " << Escape(role) << ": "
+        << Escape(part.item.name) << "</td><td>" << Escape(part.item.CodeText()) << "</td><td class=\"num\">"
+        << Num(part.item.diameterMm)
+        << (std::isfinite(part.item.distalDiameterMm) && part.item.distalDiameterMm != part.item.diameterMm
+              ? " → " + Num(part.item.distalDiameterMm)
+              : std::string())
+        << "</td>"
+        << (name.empty() ? "<td class=\"num\">" + Escape(ClinicalText(part.item.lengthMm, "mm")) + "</td>"
+                         : ValueCell(name, part.item.lengthMm, "mm", values.at(name).text))
+        << "<td class=\"num\">" << Num(part.proximalMm) << " – " << Num(part.distalMm) << "</td></tr>";
+  }
+  out << "</table><table><tr><th>junction</th><th>overlap</th><th>needs</th></tr>";
+  for (const ComponentOverlap& o : c->overlaps)
+    out << "<tr><td>" << Escape(o.junction) << "</td><td class=\"num\">" << Escape(ClinicalText(o.overlapMm, "mm"))
+        << "</td><td class=\"num\">" << Num(o.minMm) << " – " << Num(o.maxMm) << " mm</td></tr>";
+  out << "</table><ul>";
+  for (std::size_t i = 1; i < lines.size(); ++i)
+    if (lines[i].find("side: covered") != std::string::npos || lines[i].find("FINDING") != std::string::npos ||
+        lines[i].find("Note:") != std::string::npos || lines[i].find("Alternative:") != std::string::npos)
+      out << "<li" << (lines[i].find("FINDING") != std::string::npos ? " class=\"fail\"" : "") << ">"
+          << Escape(lines[i].substr(lines[i].find_first_not_of(' '))) << "</li>";
+  out << "</ul>\n";
 }
 
 /// The device's nominal diameters drawn over the profiles: main body, right limb, left limb.
@@ -178,7 +244,9 @@ std::array<double, 3> NominalDiameters(const RepairPlan& plan)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const DeviceSelection& s = plan.selection;
-  const int f = plan.HasGraft() ? plan.simulatedFamily : s.recommended;
+  if (plan.HasGraft())
+    return plan.graftDiametersMm;
+  const int f = s.recommended;
   if (f < 0 || f >= static_cast<int>(s.families.size()))
     return { nan, nan, nan };
   const FamilyEvaluation& e = s.families[f];
@@ -297,10 +365,19 @@ void StraightenedView(const StraightenedFigure& f, const char* side, std::ostrea
         << C(l.pathMm) << "\" stroke=\"#06c\" stroke-width=\"0.5\"/><text x=\"" << C(half + 12) << "\" y=\""
         << C(l.pathMm + 1.0) << "\" font-size=\"3\" fill=\"#06c\" data-landmark=\"" << Escape(l.label) << "\">"
         << Escape(l.label) << "</text>";
-  if (std::isfinite(f.graftStartMm) && std::isfinite(f.graftEndMm))
-    out << "<line x1=\"" << C(half + 9) << "\" x2=\"" << C(half + 9) << "\" y1=\"" << C(f.graftStartMm) << "\" y2=\""
-        << C(f.graftEndMm) << "\" stroke=\"#080\" stroke-width=\"1.2\"/><text x=\"" << C(half + 8) << "\" y=\""
-        << C(f.graftStartMm - 1.5) << "\" font-size=\"2.8\" fill=\"#080\">graft</text>";
+  // The simulated components side by side, each in its colour, over its simulated extent.
+  for (std::size_t k = 0; k < f.components.size(); ++k)
+  {
+    const ComponentExtent& e = f.components[k];
+    const double x = half + 7.0 + 2.0 * double(k);
+    out << "<line class=\"component\" data-component=\"" << Escape(e.label) << "\" data-from-mm=\""
+        << FormatNumber(e.fromMm, 2) << "\" data-to-mm=\"" << FormatNumber(e.toMm, 2) << "\" x1=\"" << C(x)
+        << "\" x2=\"" << C(x) << "\" y1=\"" << C(e.fromMm) << "\" y2=\"" << C(e.toMm) << "\" stroke=\"" << Rgb(e.rgb)
+        << "\" stroke-width=\"1.4\"/>";
+  }
+  if (std::isfinite(f.graftStartMm))
+    out << "<text x=\"" << C(half + 6) << "\" y=\"" << C(f.graftStartMm - 1.5)
+        << "\" font-size=\"2.8\" fill=\"#036\">graft</text>";
   out << "<line x1=\"" << C(-half) << "\" x2=\"" << C(-half + 10) << "\" y1=\"" << C(length + 5) << "\" y2=\""
       << C(length + 5) << "\" stroke=\"#000\" stroke-width=\"0.8\"/><text x=\"" << C(-half) << "\" y=\""
       << C(length + 10) << "\" font-size=\"3\">10 mm</text>";
@@ -344,12 +421,14 @@ void CrossSectionView(const CrossSectionFigure& f, const std::map<std::string, P
   const auto value = [&](const std::string& name)
   {
     const auto v = values.find(name);
-    return v == values.end() ? std::string("-1") : v->second.text;
+    const std::string text = v == values.end() ? std::string("-1") : v->second.text;
+    const double number = v != values.end() && v->second.measured ? std::stod(text) : std::nan("");
+    return "<span data-name=\"" + Escape(name) + "\" data-value=\"" + Escape(text) + "\">" +
+           Escape(ClinicalText(number, "mm")) + "</span>";
   };
   out << "<div class=\"caption\"><b>" << f.level.label << "</b> " << Escape(f.level.vessel) << " at "
-      << Num(f.level.abscissaMm) << " mm: outer <span data-name=\"" << f.level.outerName << "\">"
-      << Escape(value(f.level.outerName)) << "</span> mm, lumen <span data-name=\"" << f.level.lumenName << "\">"
-      << Escape(value(f.level.lumenName)) << "</span> mm. Cyan: the measured ring; green/magenta: its shortest and "
+      << Num(f.level.abscissaMm) << " mm: outer " << value(f.level.outerName) << ", lumen " << value(f.level.lumenName)
+      << ". Cyan: the measured ring; green/magenta: its shortest and "
       << "longest diameter; orange dashed: the outer wall; white bar 10 mm.</div></div>\n";
 }
 
@@ -396,7 +475,32 @@ void DeviceTable(const RepairPlan& plan, std::ostream& out)
   out << "</table>\n";
 }
 
-void FitCheckSection(const RepairPlan& plan, const std::map<std::string, PlanValue>& values, std::ostream& out)
+/// The simulated graft in the vessel from two directions, with the colours' legend.
+void GraftViews(const RepairPlan& plan, const ReportFigures& figures, std::ostream& out)
+{
+  if (figures.graftViews.empty())
+    return;
+  out << "<div class=\"figures\">";
+  for (std::size_t k = 0; k < figures.graftViews.size(); ++k)
+    out << "<div class=\"figure\"><img class=\"graft-view\" data-view=\"" << Escape(figures.graftViewNames[k])
+        << "\" width=\"" << figures.graftViews[k].width / 2 << "\" src=\"" << PngDataUri(figures.graftViews[k])
+        << "\" alt=\"the simulated graft, " << Escape(figures.graftViewNames[k]) << " view\"><div class=\"caption\">"
+        << Escape(figures.graftViewNames[k]) << " view</div></div>";
+  out << "</div><p class=\"def\">The simulated graft in the vessel (lumen red and outer wall tan, both translucent), "
+         "rendered by the planning run. ";
+  for (const ConfiguredComponent& part : plan.graft.layout.components)
+    out << "<span style=\"color:" << Rgb(ComponentColour(part)) << "\">&#9632;</span> " << Escape(part.item.name)
+        << (part.role == OrderRole::MainBody ? ""
+            : part.side == 0                 ? " (right)"
+                                             : " (left)")
+        << "; ";
+  out << "</p>\n";
+}
+
+void FitCheckSection(const RepairPlan& plan,
+                     const ReportFigures& figures,
+                     const std::map<std::string, PlanValue>& values,
+                     std::ostream& out)
 {
   out << "<h2>Fit check of the simulated graft</h2>\n";
   if (!plan.HasGraft())
@@ -405,31 +509,63 @@ void FitCheckSection(const RepairPlan& plan, const std::map<std::string, PlanVal
     return;
   }
   const FitCheck& fit = plan.fitCheck;
-  out << "<p>" << Escape(plan.selection.families[plan.simulatedFamily].family) << ", main body "
-      << Num(plan.graftDiametersMm[0], 1) << " mm, limbs " << Num(plan.graftDiametersMm[1], 1) << " / "
-      << Num(plan.graftDiametersMm[2], 1) << " mm: " << Escape(FitVerdict(plan)) << ".</p><table>";
-  for (const char* name : { "mainBodyDiameter", "rightLimbDiameter", "leftLimbDiameter", "proximalSealLength",
-                            "rightIliacSealLength", "leftIliacSealLength", "proximalOversizing", "rightLimbOversizing",
-                            "leftLimbOversizing", "coveredOstia", "migrationRisk" })
+  const GraftLayout& layout = plan.graft.layout;
+  out << "<p>" << Escape(plan.selection.families[plan.simulatedFamily].family)
+      << (layout.configured ? ", the ordered components deployed with the main body's proximal edge at the target"
+                            : ", the chosen diameters over the measured landing zones (lengths not configured)")
+      << ": the fit check <b class=\"" << (fit.Passed() ? "pass\">passed" : "fail\">failed") << "</b>.</p>";
+  if (!fit.findings.empty())
+  {
+    out << "<ul>";
+    for (const std::string& f : fit.findings)
+      out << "<li class=\"fail\">" << Escape(f) << "</li>";
+    out << "</ul>";
+  }
+  GraftViews(plan, figures, out);
+  const auto row = [&](const std::string& label, const std::string& name, double value, const std::string& unit,
+                       const std::string& needs)
   {
     const auto v = values.find(name);
-    out << "<tr><td>" << name << "</td><td class=\"num\" data-name=\"" << name << "\">"
-        << Escape(v != values.end() ? v->second.text : "") << "</td></tr>";
-  }
-  out << "</table><table><tr><th>ostium</th><th>on</th><th>extent (mm)</th><th>overlap (mm)</th><th>covered</th></tr>";
+    out << "<tr><td>" << Escape(label) << "</td>"
+        << (name.empty() || v == values.end() ? "<td class=\"num\">" + Escape(ClinicalText(value, unit)) + "</td>"
+                                              : ValueCell(name, value, unit, v->second.text))
+        << "<td>" << Escape(needs) << "</td></tr>";
+  };
+  const std::string lumenOnly = " (estimated: the outer wall not traced under part of it)";
+  out << "<table><tr><th>the simulated graft</th><th>value</th><th>needs</th></tr>";
+  row(std::string("proximal seal on healthy wall") + (fit.sealOnLumenOnly[0] ? lumenOnly : ""), "proximalSealLength",
+      fit.proximalSealLengthMm, "mm",
+      "≥ 10 mm" + (fit.proximalSealEnd.empty() ? "" : "; ends where " + fit.proximalSealEnd));
+  row("shortest apposition length (any side)", "", fit.shortestAppositionLengthMm, "mm", "≥ 10 mm");
+  row(std::string("right iliac seal on healthy wall") + (fit.sealOnLumenOnly[1] ? lumenOnly : ""),
+      "rightIliacSealLength", fit.rightIliacSealLengthMm, "mm", "the family's minimum iliac seal");
+  row(std::string("left iliac seal on healthy wall") + (fit.sealOnLumenOnly[2] ? lumenOnly : ""), "leftIliacSealLength",
+      fit.leftIliacSealLengthMm, "mm", "the family's minimum iliac seal");
+  row("main body oversizing at the proximal edge", "proximalOversizing", fit.proximalOversizingPercent, "%",
+      "10–25 %; over 30 %: infolding");
+  row("right limb oversizing in the landing zone", "rightLimbOversizing", fit.rightLimbOversizingPercent, "%",
+      "10–25 %");
+  row("left limb oversizing in the landing zone", "leftLimbOversizing", fit.leftLimbOversizingPercent, "%", "10–25 %");
+  row("calcified share of the proximal seal zone (seals, flagged)", "", fit.proximalCalcifiedPercent, "%", "");
+  out << "<tr><td>ostia covered</td><td data-name=\"coveredOstia\">" << Escape(values.at("coveredOstia").text)
+      << "</td><td>none</td></tr></table>";
+  out << "<table><tr><th>ostium</th><th>on</th><th>extent (mm)</th><th>overlap with the graft</th><th>covered</th>"
+         "</tr>";
   for (const OstiumCoverage& o : fit.ostia)
-    out << "<tr><td>" << Escape(o.branch) << "</td><td>" << Escape(o.parent) << "</td><td class=\"num\">"
-        << Num(o.upperAbscissaMm) << " … " << Num(o.lowerAbscissaMm) << "</td><td class=\"num\">" << Num(o.overlapMm)
-        << "</td><td" << (o.covered ? " class=\"fail\">yes" : ">no") << "</td></tr>";
-  out << "</table><table><tr><th>segment</th><th>vertices</th><th>sealing</th><th>apposition gap median (mm)</th>"
-         "<th>max (mm)</th></tr>";
+    out << "<tr><td>" << Escape(ValueLabel(o.branch)) << "</td><td>" << Escape(o.parent) << "</td><td class=\"num\">"
+        << Num(o.upperAbscissaMm) << " … " << Num(o.lowerAbscissaMm) << "</td><td class=\"num\">"
+        << Escape(ClinicalText(o.overlapMm, "mm")) << "</td><td" << (o.covered ? " class=\"fail\">yes" : ">no")
+        << "</td></tr>";
+  out << "</table><table><tr><th>segment</th><th>vertices</th><th>sealing</th><th>apposition gap median</th>"
+         "<th>largest</th></tr>";
   const char* names[3] = { "trunk", "right leg", "left leg" };
+  const StentMesh& mesh = layout.mesh;
   for (int seg = 0; seg < 3; ++seg)
   {
     std::vector<double> gaps;
     int sealed = 0;
-    for (Eigen::Index i = 0; i < plan.mesh.segment.size(); ++i)
-      if (plan.mesh.segment[i] == seg && i < fit.appositionMm.size())
+    for (Eigen::Index i = 0; i < mesh.segment.size(); ++i)
+      if (mesh.segment[i] == seg && i < fit.appositionMm.size())
       {
         gaps.push_back(fit.appositionMm[i]);
         sealed += i < fit.sealing.size() && fit.sealing[i] ? 1 : 0;
@@ -437,8 +573,9 @@ void FitCheckSection(const RepairPlan& plan, const std::map<std::string, PlanVal
     if (gaps.empty())
       continue;
     out << "<tr><td>" << names[seg] << "</td><td class=\"num\">" << gaps.size() << "</td><td class=\"num\">"
-        << Num(100.0 * sealed / static_cast<double>(gaps.size())) << " %</td><td class=\"num\">" << Num(Median(gaps), 2)
-        << "</td><td class=\"num\">" << Num(*std::max_element(gaps.begin(), gaps.end()), 2) << "</td></tr>";
+        << Escape(ClinicalText(100.0 * sealed / static_cast<double>(gaps.size()), "%")) << "</td><td class=\"num\">"
+        << Escape(ClinicalText(Median(gaps), "mm")) << "</td><td class=\"num\">"
+        << Escape(ClinicalText(*std::max_element(gaps.begin(), gaps.end()), "mm")) << "</td></tr>";
   }
   out << "</table>\n";
 }
@@ -465,6 +602,7 @@ std::string ReportHtml(const RepairPlan& plan, const ReportFigures& figures, con
       << Escape(run.inputVolume) << "</title><style>" << Css << "</style></head><body>\n";
   Header(plan, run, out);
   Summary(plan, values, out);
+  OrderSection(plan, values, out);
   MeasurementTable(plan, values, out);
   const std::vector<SizingLevel> levels = SizingLevels(plan.measurements);
   out << "<h2>Diameter profiles</h2>\n";
@@ -474,8 +612,9 @@ std::string ReportHtml(const RepairPlan& plan, const ReportFigures& figures, con
          "(stretched curved "
          "planar reformat, coronal orientation: the patient's right on the left), window "
       << FormatNumber(ReportWindowLowHu, 0) << " … " << FormatNumber(ReportWindowHighHu, 0)
-      << " HU. Cyan: lumen edge; orange dashed: outer wall; red: levels (a)–(f); blue ticks: landmarks; green bar: "
-         "the simulated graft.</p><div class=\"figures\">\n";
+      << " HU. Cyan: lumen edge; orange dashed: outer wall; red: levels (a)–(f); blue ticks: landmarks; coloured "
+         "bars: each component of the simulated graft over its simulated extent (blue main body, green ipsilateral "
+         "limb, orange contralateral limb, purple iliac extension).</p><div class=\"figures\">\n";
   StraightenedView(figures.straightened[0], "right", out);
   StraightenedView(figures.straightened[1], "left", out);
   out << "</div>\n<h2>Cross-sections at the sizing levels</h2>\n<p class=\"def\">Perpendicular to the centerline; the "
@@ -483,8 +622,8 @@ std::string ReportHtml(const RepairPlan& plan, const ReportFigures& figures, con
   for (const CrossSectionFigure& f : figures.sections)
     CrossSectionView(f, values, out);
   out << "</div>\n";
+  FitCheckSection(plan, figures, values, out);
   DeviceTable(plan, out);
-  FitCheckSection(plan, values, out);
   out
     << "<p class=\"def\">Printing: open this file in a browser and print it (Ctrl+P) to PDF; the page is laid out for "
        "A4. Everything is in this one file.</p></body></html>\n";

@@ -7,6 +7,7 @@
 
 #include "IO/WriteReturnParameters.h"
 #include "IO/WriteTextFile.h"
+#include "Pipeline/ValueText.h"
 
 namespace sgp
 {
@@ -46,12 +47,14 @@ std::string FormatMeasurementsTable(const Measurements& measurements)
 std::string FormatMeasurementsTable(const std::vector<Measurement>& rows)
 {
   std::ostringstream out;
-  out << "name,value,unit,definition,vessel,abscissaMm,minDiameterMm,maxDiameterMm,areaDiameterMm,wall,estimated\n";
+  out << "name,value,unit,definition,vessel,abscissaMm,minDiameterMm,maxDiameterMm,areaDiameterMm,wall,estimated,label,"
+         "shown\n";
   for (const Measurement& m : rows)
   {
     out << m.name << ',' << Number(m.value) << ',' << Quoted(m.unit) << ',' << Quoted(m.definition) << ',' << m.vessel
         << ',' << Number(m.abscissaMm) << ',' << Number(m.minMm) << ',' << Number(m.maxMm) << ',' << Number(m.areaMm)
-        << ',' << m.wall << ',' << (m.estimated ? "true" : "false") << '\n';
+        << ',' << m.wall << ',' << (m.estimated ? "true" : "false") << ',' << Quoted(ValueLabel(m.name)) << ','
+        << Quoted(ClinicalText(m.value, m.unit) + (m.estimated ? " (estimated)" : "")) << '\n';
   }
   return out.str();
 }
@@ -144,6 +147,15 @@ nlohmann::json FitCheckToJson(const FitCheck& check)
            { "limbsChecked", { { "right", check.limbChecked[0] }, { "left", check.limbChecked[1] } } },
            { "migrationRisk", check.migrationRisk },
            { "proximalSealLengthMm", check.proximalSealLengthMm },
+           { "proximalSealEnd", check.proximalSealEnd },
+           { "shortestAppositionLengthMm", JsonNumber(check.shortestAppositionLengthMm) },
+           { "proximalCalcifiedPercent", check.proximalCalcifiedPercent },
+           { "sealEstimatedOnLumen",
+             { { "proximal", check.sealOnLumenOnly[0] },
+               { "right", check.sealOnLumenOnly[1] },
+               { "left", check.sealOnLumenOnly[2] } } },
+           { "sealDefinition", "apposed within 1 mm on healthy wall: thrombus under 2 mm thick and, proximally, the "
+                               "outer wall within 10 % of (a); a ring seals when 90 % of it does" },
            { "rightIliacSealLengthMm", JsonNumber(check.rightIliacSealLengthMm) },
            { "leftIliacSealLengthMm", JsonNumber(check.leftIliacSealLengthMm) },
            { "proximalOversizingPercent", JsonNumber(check.proximalOversizingPercent) },

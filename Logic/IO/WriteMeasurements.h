@@ -3,10 +3,12 @@
 /// `<table>` output as a vtkMRMLTableNode) and the measurement part of the JSON report.
 ///
 /// Measurements table, one row per value (MeasureAnatomy.h), header
-///   `name,value,unit,definition,vessel,abscissaMm,minDiameterMm,maxDiameterMm,areaDiameterMm,wall,estimated`
-/// — value empty when not measured, the diameter columns empty for non-diameters; `wall` outer,
-/// lumen or empty (neither applies); `estimated` true for an outer diameter at a level less than
-/// 60 % supported (MeasureOuterWall.h). Text fields are
+///   `name,value,unit,definition,vessel,abscissaMm,minDiameterMm,maxDiameterMm,areaDiameterMm,wall,estimated,label,shown`
+/// — value empty when not measured (full precision, for machines), the diameter columns empty for
+/// non-diameters; `wall` outer, lumen or empty (neither applies); `estimated` true for an outer
+/// diameter at a level less than 60 % supported (MeasureOuterWall.h) or a value sized on the lumen;
+/// `label` the value in words and `shown` the value as a person reads it, at clinical precision
+/// with its unit (ValueText.h). Text fields are
 /// double-quoted (definitions contain commas). Numbers with up to 10 significant digits.
 /// Diameter profile table, one row per ring of the fitted surface, header
 ///   `vessel,abscissaMm,meanDiameterMm,minDiameterMm,maxDiameterMm,areaDiameterMm`
@@ -38,7 +40,9 @@ void WriteDiameterProfiles(const Measurements& measurements, const std::string& 
 /// "warnings": […]}.
 nlohmann::json MeasurementsToJson(const Measurements& measurements);
 
-/// {"passed", "migrationRisk", "proximalSealLengthMm", "rightIliacSealLengthMm",
+/// {"passed", "migrationRisk", "proximalSealLengthMm", "proximalSealEnd" (why it ends, words),
+/// "shortestAppositionLengthMm", "proximalCalcifiedPercent", "sealEstimatedOnLumen": {"proximal",
+/// "right", "left"}, "sealDefinition", "rightIliacSealLengthMm",
 /// "leftIliacSealLengthMm", "proximalOversizingPercent", "rightLimbOversizingPercent",
 /// "leftLimbOversizingPercent", "coveredOstia": [names], "ostia": [{"branch", "parent",
 /// "upperAbscissaMm", "lowerAbscissaMm", "overlapMm", "covered"}], "findings": [lines]}.

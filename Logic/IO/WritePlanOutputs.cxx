@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "IO/DeploymentToJson.h"
 #include "IO/DeviceSelectionToJson.h"
 #include "IO/ReportHtml.h"
 #include "IO/WriteCenterlines.h"
@@ -46,6 +47,7 @@ nlohmann::json PlanReportJson(const RepairPlan& plan, const PlanRunInfo& run)
   report["device"] = DeviceSelectionToJson(plan.selection);
   report["device"]["simulated"] =
     plan.HasGraft() ? nlohmann::json(plan.selection.families[plan.simulatedFamily].family) : nlohmann::json(nullptr);
+  report["deployment"] = DeploymentToJson(plan);
   report["fitCheck"] = plan.HasGraft() ? FitCheckToJson(plan.fitCheck) : nlohmann::json(nullptr);
   const VesselWall& wall = plan.vesselWall;
   nlohmann::json planes = nlohmann::json::object();
@@ -154,9 +156,16 @@ void WritePlanOutputs(const RepairPlan& plan,
     Require(plan, PlanStage::Device, "outputSimulatedStentModel");
     if (!plan.HasGraft())
       throw std::logic_error("WritePlanOutputs: outputSimulatedStentModel was asked for, but no graft was simulated");
-    WriteStentModel(plan.mesh, plan.graft.V, plan.graft.radiusMm, plan.graft.wallDistanceMm,
-                    { { "Oversizing", plan.fitCheck.oversizingPercent },
+    const GraftLayout& layout = plan.graft.layout;
+    WriteStentModel(layout.mesh, plan.graft.fit.V, plan.graft.fit.radiusMm, plan.graft.fit.wallDistanceMm,
+                    { { "Component", layout.component.cast<double>() },
+                      { "InnerComponent", layout.innerComponent.cast<double>() },
+                      { "NominalRadius", layout.nominalRadiusMm },
+                      { "Oversizing", plan.fitCheck.oversizingPercent },
                       { "Apposition", plan.fitCheck.appositionMm },
+                      { "HealthyWall", plan.fitCheck.healthyWall.cast<double>() },
+                      { "ThrombusUnder", plan.fitCheck.thrombusUnderMm },
+                      { "Calcified", plan.fitCheck.calcified.cast<double>() },
                       { "Sealing", plan.fitCheck.sealing.cast<double>() } },
                     outputs.Stage(paths.simulatedStentModel));
   }

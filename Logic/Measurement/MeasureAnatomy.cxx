@@ -406,6 +406,11 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
   const double sNeckEnd = std::isfinite(out.outerNeckEndMm) ? out.outerNeckEndMm : sLumenNeckEnd;
   double iliacOffset[2];
   MeasureLengths(c, sNeckEnd, iliacOffset, out);
+  for (int side = 0; side < 2; ++side)
+  {
+    out.iliacStartBeyondBifurcationMm[side] = iliacOffset[side];
+    out.internalIliacAbscissaMm[side] = c.internalIliacAbscissa[side];
+  }
   MeasureNeckAngles(c, sNeckEnd, a, b, out);
   MeasureIliacAccess(c, iliacOffset, out);
   LeaveOutWhatTheScanDoesNotHold(c, out);

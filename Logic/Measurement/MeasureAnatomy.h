@@ -104,6 +104,12 @@ struct Measurements
   /// their iliac's centerline; NaN where no internal iliac was found.
   std::array<Point3, 2> internalIliacOriginLps{ Point3::Constant(std::numeric_limits<double>::quiet_NaN()),
                                                 Point3::Constant(std::numeric_limits<double>::quiet_NaN()) };
+  /// Per iliac (0 right, 1 left): how far its centerline's first point lies beyond B along it, mm
+  /// (the iliac lengths are B → origin = this + the origin's abscissa), and the internal iliac
+  /// origin's abscissa along the iliac's centerline, mm (NaN: none found).
+  std::array<double, 2> iliacStartBeyondBifurcationMm{ 0.0, 0.0 };
+  std::array<double, 2> internalIliacAbscissaMm{ std::numeric_limits<double>::quiet_NaN(),
+                                                 std::numeric_limits<double>::quiet_NaN() };
   std::vector<Measurement> values; ///< in the order of the file comment
   std::array<DiameterProfile, 3> profiles;
   std::vector<std::string> warnings;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <random>
 
@@ -24,7 +25,6 @@ constexpr double renalRadiusMm = 3.0;
 constexpr double renalHilumLateralMm = 64.0, renalHilumPosteriorMm = 10.0; ///< from the renal's origin
 constexpr double visceralRadiusMm = 3.5;
 constexpr double distalNeckLengthMm = 20.0;
-constexpr double commonIliacLengthMm = 55.0;
 constexpr double commonIliacAngleDeg = 25.0;
 constexpr double vertebraRadiusMm = 20.0;
 constexpr double corticalThicknessMm = 2.0;
@@ -204,12 +204,13 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   Point3 iliacEnd[2];
   const char* sideName[2] = { "right", "left" };
   const double iliacRadius[2] = { p.rightIliacDiameterMm / 2, p.leftIliacDiameterMm / 2 };
+  const double commonIliacLengthMm[2] = { p.rightCommonIliacLengthMm, p.leftCommonIliacLengthMm };
   for (int side = 0; side < 2; ++side)
   {
     const double lateral = side == 0 ? -1.0 : 1.0; // patient right is -x in LPS
     const std::string prefix = sideName[side];
     const double r = iliacRadius[side]; // outer; the lumen lies the wall's thickness inside
-    iliacEnd[side] = commonIliacLengthMm * Point3(lateral * std::sin(angle), 0, -std::cos(angle));
+    iliacEnd[side] = commonIliacLengthMm[side] * Point3(lateral * std::sin(angle), 0, -std::cos(angle));
     const std::vector<Point3> common{ Point3::Zero(), iliacEnd[side] };
     const std::vector<Point3> external{ iliacEnd[side], iliacEnd[side] + 70.0 * Unit(lateral * 0.17, -0.15, -0.97) };
     const std::vector<Point3> internal{ iliacEnd[side], iliacEnd[side] + 40.0 * Unit(lateral * 0.45, 0.55, -0.7) };
@@ -219,6 +220,14 @@ Anatomy BuildAnatomy(const PhantomParams& p)
     anatomy.tubes.push_back(StraightTube(prefix + "Iliac", common, r - wallMm));
     anatomy.tubes.push_back(StraightTube(prefix + "ExternalIliac", external, lumenOf(0.75 * r)));
     anatomy.tubes.push_back(StraightTube(prefix + "InternalIliac", internal, lumenOf(0.55 * r)));
+    (side == 0 ? truth.sizing.rightInternalIliacRadius : truth.sizing.leftInternalIliacRadius) = lumenOf(0.55 * r);
+    // The internal iliac's ostium on the common iliac's wall: its most upstream point along the
+    // common iliac's axis (the branch leaves that axis at its end; an oblique branch's ostium starts
+    // there, where the common iliac divides).
+    const Eigen::Vector3d commonAxis = iliacEnd[side].normalized();
+    (side == 0 ? truth.sizing.rightInternalIliacOstium : truth.sizing.leftInternalIliacOstium) =
+      commonIliacLengthMm[side] -
+      OstiumLowerEdgeDepthMm(r - wallMm, lumenOf(0.55 * r), (internal[1] - internal[0]).normalized(), commonAxis);
     if (wallMm > 0.0)
     {
       anatomy.wallTubes.push_back(StraightTube(prefix + "IliacWall", common, r));
@@ -290,9 +299,32 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   while (z10 > sacBottom && radiusAtZ(z10) < 1.1 * rNeck)
     z10 -= 0.001;
   sizing.proximalNeckLength = siteZ - z10;
+  // The healthy neck (the seal a graft can get) and where the neck thrombus covers a quarter.
+  sizing.healthyNeckLength = sizing.proximalNeckLength;
+  sizing.neckThrombusBelowSite = std::numeric_limits<double>::infinity();
+  if (wall)
+  {
+    bool healthyEnded = false;
+    for (double h = siteZ; h >= z10; h -= 0.01)
+    {
+      int thick = 0;
+      for (int k = 0; k < 720; ++k) // 0.5° steps
+        thick += wall->ThrombusThicknessAt(h, 0.5 * k) > 2.0 ? 1 : 0;
+      if (!healthyEnded && thick > 0.10 * 720)
+      {
+        sizing.healthyNeckLength = siteZ - h;
+        healthyEnded = true;
+      }
+      if (thick >= 0.25 * 720)
+      {
+        sizing.neckThrombusBelowSite = siteZ - h;
+        break;
+      }
+    }
+  }
   sizing.proximalSiteToBifurcationLength = siteZ;
-  sizing.rightIliacLength = commonIliacLengthMm;
-  sizing.leftIliacLength = commonIliacLengthMm;
+  sizing.rightIliacLength = p.rightCommonIliacLengthMm;
+  sizing.leftIliacLength = p.leftCommonIliacLengthMm;
   sizing.neckAngleBetaDeg = p.neckAngleDeg;
   // On the aneurysm lumen's axis at mid-sac (off the vessel's axis where there is a thrombus).
   const double seedH = 0.5 * (sacTop + sacBottom);
@@ -567,6 +599,8 @@ void ValidatePhantomParams(const PhantomParams& p)
   check("distalNeckDiameterMm", p.distalNeckDiameterMm, 10, 40, "mm");
   check("rightIliacDiameterMm", p.rightIliacDiameterMm, 5, 30, "mm");
   check("leftIliacDiameterMm", p.leftIliacDiameterMm, 5, 30, "mm");
+  check("rightCommonIliacLengthMm", p.rightCommonIliacLengthMm, 10, 80, "mm");
+  check("leftCommonIliacLengthMm", p.leftCommonIliacLengthMm, 10, 80, "mm");
   check("lumenHu", p.lumenHu, 100, 1000, "HU");
   check("tissueHu", p.tissueHu, -200, 100, "HU");
   check("blurSigmaMm", p.blurSigmaMm, 0, 3, "mm");

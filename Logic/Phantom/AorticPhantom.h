@@ -18,8 +18,9 @@
 ///    wall lies exactly at the site: 3 mm above it on a vertical neck, more on a leaning one
 ///    (β > 0), where the horizontal renal leaves the neck's axis obliquely (+1.2 mm at β = 60°).
 ///  - **superior mesenteric** and **coeliac** arteries leave anteriorly (−y) above the renals.
-///  - **common iliacs** leave the bifurcation 25° from the midline, 55 mm long, then split into
-///    **external** (continuing caudally) and **internal** iliacs (posterior and lateral).
+///  - **common iliacs** leave the bifurcation 25° from the midline, `rightCommonIliacLengthMm` /
+///    `leftCommonIliacLengthMm` long (55 mm by default), then split into **external** (continuing
+///    caudally) and **internal** iliacs (posterior and lateral).
 ///  - optional **vertebral column** behind the aorta (cortical shell 2 mm at 1100 HU around
 ///    cancellous bone at 250 HU), placed `boneGapMm` from the sac at its widest.
 ///  - optional **kidneys**, ellipsoids of `kidneyHu` at the ends of the renal arteries.
@@ -77,6 +78,9 @@ struct PhantomParams
   double distalNeckDiameterMm = 18.0;
   double rightIliacDiameterMm = 12.0;
   double leftIliacDiameterMm = 12.0;
+  /// Aortic bifurcation to the internal iliac origin, mm, in [10, 80].
+  double rightCommonIliacLengthMm = 55.0;
+  double leftCommonIliacLengthMm = 55.0;
   double neckAngleDeg = 0.0; ///< β: the neck leans anteriorly by this from the sac's vertical axis
 
   double lumenHu = 350.0;
@@ -167,19 +171,33 @@ struct PhantomSizing
   double proximalSiteToBifurcationLength = 0.0;
   double rightIliacLength = 0.0; ///< aortic bifurcation to the right internal iliac origin
   double leftIliacLength = 0.0;
+  double rightInternalIliacRadius = 0.0; ///< the internal iliac's lumen radius (its ostium's half width)
+  double leftInternalIliacRadius = 0.0;
+  /// Aortic bifurcation to the internal iliac ostium's upstream edge on the common iliac's lumen
+  /// wall, along the common iliac's axis, mm (at most the iliac length: the origin itself where the
+  /// branch leaves so obliquely that its mouth opens where the common iliac divides).
+  double rightInternalIliacOstium = 0.0;
+  double leftInternalIliacOstium = 0.0;
   double neckAngleBetaDeg = 0.0; ///< β, angle between the neck's axis and the sac's
 
   // With a wall (PhantomParams::wallThicknessMm > 0) the diameters above are of the lumen, these
   // of the outer wall, perpendicular to the vessel axis; without one both are the same vessel.
-  double outerProximalNeckDiameter = 0.0;   ///< (a)
-  double outerNeckDiameter15mm = 0.0;       ///< (b)
-  double outerMaxAneurysmDiameter = 0.0;    ///< (c), Dmax outer to outer
-  double outerDistalNeckMinDiameter = 0.0;  ///< (d)
-  double outerRightIliacDiameter = 0.0;     ///< (e)
-  double outerLeftIliacDiameter = 0.0;      ///< (f)
-  double thrombusVolumeMl = 0.0;            ///< site to bifurcation
-  double maxThrombusThicknessMm = 0.0;      ///< over the same stretch
-  double neckThrombusArcPercent = 0.0;      ///< largest share, site to 15 mm below, thicker than 2 mm
+  double outerProximalNeckDiameter = 0.0;  ///< (a)
+  double outerNeckDiameter15mm = 0.0;      ///< (b)
+  double outerMaxAneurysmDiameter = 0.0;   ///< (c), Dmax outer to outer
+  double outerDistalNeckMinDiameter = 0.0; ///< (d)
+  double outerRightIliacDiameter = 0.0;    ///< (e)
+  double outerLeftIliacDiameter = 0.0;     ///< (f)
+  double thrombusVolumeMl = 0.0;           ///< site to bifurcation
+  double maxThrombusThicknessMm = 0.0;     ///< over the same stretch
+  double neckThrombusArcPercent = 0.0;     ///< largest share, site to 15 mm below, thicker than 2 mm
+  /// The seal a graft can get on healthy wall, mm: from the site down to the first level where
+  /// thrombus thicker than 2 mm lies under more than 10 % of the circumference (a ring seals when 90 %
+  /// of it does: FitCheck.h) or the outer diameter exceeds (a) by 10 % (the neck length).
+  double healthyNeckLength = 0.0;
+  /// From the site down to the first level where thrombus thicker than 2 mm lies under at least a
+  /// quarter of the circumference, mm; infinity when it never does above the sac.
+  double neckThrombusBelowSite = 0.0;
   double neckCalcificationArcPercent = 0.0; ///< largest share, site to 15 mm below
 };
 

@@ -12,6 +12,9 @@
 #include "Common/Errors.h"
 #include "Common/Format.h"
 #include "Common/Median.h"
+#include "Common/Text.h"
+#include "Device/ConfigurationLengths.h"
+#include "Device/DeployGraft.h"
 #include "Segmentation/FindAorticSeed.h"
 #include "Stent/WallDistanceField.h"
 
@@ -166,7 +169,8 @@ void Measure(const WallDistanceField& wall, const PlanParams& params, const Stag
   }
 }
 
-/// The simulated device's sizes as table rows, on the wall its IFU names.
+/// The simulated device's sizes as table rows, on the wall its IFU names (the graft's diameters:
+/// the selection's, or the configuration's where it planned a limb the selection could not size).
 void AddDeviceRows(const DeviceCatalog& catalog, RepairPlan& plan)
 {
   const FamilyEvaluation& family = plan.selection.families[plan.simulatedFamily];
@@ -177,20 +181,73 @@ void AddDeviceRows(const DeviceCatalog& catalog, RepairPlan& plan)
   const std::string name = family.family + (!plan.fitCheck.Complete() ? " (main body only: partial plan)"
                                             : plan.selection.recommended == plan.simulatedFamily ? ""
                                                                                                  : " (outside IFU)");
-  const StentMesh& mesh = plan.mesh;
-  plan.rows.push_back({ "mainBodyDiameter", family.mainBody.diameterMm, "mm",
-                        name + " main body, " + FormatNumber(family.mainBody.oversizingPercent) + over + "(a)", "aorta",
-                        plan.measurements.site.abscissaMm });
-  plan.rows.push_back({ "rightLimbDiameter", family.rightLimb.diameterMm, "mm",
-                        name + " right limb, " + FormatNumber(family.rightLimb.oversizingPercent) + over + "(e)",
-                        "rightIliac", mesh.ringAbscissaMm[RightLegSegment].back() });
-  plan.rows.push_back({ "leftLimbDiameter", family.leftLimb.diameterMm, "mm",
-                        name + " left limb, " + FormatNumber(family.leftLimb.oversizingPercent) + over + "(f)",
-                        "leftIliac", mesh.ringAbscissaMm[LeftLegSegment].back() });
-  for (std::size_t i = plan.rows.size() - 3; i < plan.rows.size(); ++i)
-    plan.rows[i].wall = wall;
-  for (const Measurement& m : FitCheckRows(plan.fitCheck, mesh))
+  const StentMesh& mesh = plan.graft.layout.mesh;
+  const SizingAnatomy sizing =
+    SizingFromMeasurements(plan.measurements).On(catalog.families[std::size_t(family.catalogIndex)].diameterReference);
+  const double vessels[3] = { sizing.proximalNeckDiameterMm, sizing.rightIliacDiameterMm, sizing.leftIliacDiameterMm };
+  const char* names[3] = { "mainBodyDiameter", "rightLimbDiameter", "leftLimbDiameter" };
+  const char* parts[3] = { " main body, ", " right limb, ", " left limb, " };
+  const char* levels[3] = { "(a)", "(e)", "(f)" };
+  const char* vesselNames[3] = { "aorta", "rightIliac", "leftIliac" };
+  for (int k = 0; k < 3; ++k)
+  {
+    const double d = plan.graftDiametersMm[std::size_t(k)];
+    const double at = k == 0 ? plan.graft.layout.targetAbscissaMm : mesh.ringAbscissaMm[std::size_t(k)].back();
+    plan.rows.push_back({ names[k], d, "mm",
+                          name + parts[k] + FormatNumber(OversizingPercent(d, vessels[k])) + over + levels[k],
+                          vesselNames[k], at });
+    Measurement& row = plan.rows.back();
+    row.wall = family.EstimatedOnLumen() ? "lumen" : wall;
+    row.estimated = family.EstimatedOnLumen();
+    if (family.EstimatedOnLumen())
+      row.definition += "; estimated (lumen): sized on the lumen at " + JoinWithCommas(family.estimatedFromLumen) +
+                        " where the outer wall was not traced";
+  }
+  for (const Measurement& m : FitCheckRows(plan.fitCheck, plan.graft))
     plan.rows.push_back(m);
+}
+
+/// The ordered components' lengths as table rows (mainBodyLength, rightLimbLength,
+/// leftLimbLength): NaN when the configuration was not made, 0 for a side whose main-body leg
+/// lands without a limb.
+void AddOrderRows(RepairPlan& plan)
+{
+  const DeviceConfiguration* c = plan.Configuration();
+  const double target = plan.deploymentTargetAbscissaMm;
+  const bool configured = c && c->configured;
+  const ConfiguredComponent* body = configured ? c->Find(OrderRole::MainBody) : nullptr;
+  const std::string estimated =
+    plan.orderedFamily >= 0 && plan.selection.families[std::size_t(plan.orderedFamily)].EstimatedOnLumen()
+      ? "; estimated (lumen)"
+      : "";
+  const std::string why = c ? c->unknownReason : "no main body was sized";
+  plan.rows.push_back({ "mainBodyLength", body ? body->item.lengthMm : std::numeric_limits<double>::quiet_NaN(), "mm",
+                        body
+                          ? c->family + " " + body->item.name + " " + body->item.CodeText() +
+                              ": covered length from the proximal fabric edge to the ipsilateral leg's end" + estimated
+                          : "main body length: not configured (" + why + ")" + estimated,
+                        "aorta", target });
+  const char* names[2] = { "rightLimbLength", "leftLimbLength" };
+  const char* vessels[2] = { "rightIliac", "leftIliac" };
+  for (int side = 0; side < 2; ++side)
+  {
+    const ConfiguredComponent* limb = nullptr;
+    if (configured)
+      limb = c->Find(side == c->ipsilateralSide ? OrderRole::IpsilateralLimb : OrderRole::ContralateralLimb, side);
+    const std::string sideName = side == 0 ? "right" : "left";
+    std::string definition =
+      !configured ? sideName + " limb length: not configured (" + why + ")" + estimated
+      : limb      ? c->family + " " + sideName + (side == c->ipsilateralSide ? " ipsilateral" : " contralateral") +
+                 " limb " + limb->item.CodeText() + ", its covered length; the " + sideName + " side covers " +
+                 FormatNumber(c->coveredLengthMm[side]) + " mm from the proximal fabric edge" + estimated
+             : "no " + sideName + " limb: the main body's ipsilateral leg lands there (" +
+                 FormatNumber(c->coveredLengthMm[side]) + " mm from the proximal edge)";
+    const double value = !configured ? std::numeric_limits<double>::quiet_NaN() : limb ? limb->item.lengthMm : 0.0;
+    plan.rows.push_back({ names[side], value, "mm", definition, vessels[side],
+                          configured ? c->coveredLengthMm[side] - plan.measurements.bifurcationAbscissaMm + target -
+                                         plan.measurements.iliacStartBeyondBifurcationMm[side]
+                                     : std::numeric_limits<double>::quiet_NaN() });
+  }
 }
 
 /// A partial plan whose limbs cannot be sized: the proximal part of the fit check (proximal seal,
@@ -218,27 +275,26 @@ void SimulateTheMainBodyOnly(const WallDistanceField& wall,
   const SizeChoice* limbs[2] = { &family.rightLimb, &family.leftLimb };
   plan.graftDiametersMm = { family.mainBody.diameterMm, std::numeric_limits<double>::quiet_NaN(),
                             std::numeric_limits<double>::quiet_NaN() };
-  ActiveContourParams graftParams = params.graft;
-  graftParams.balloonRadiusMm[TrunkSegment] = family.mainBody.diameterMm / 2.0;
+  std::array<double, 2> fallback{ 0.0, 0.0 };
   for (int side = 0; side < 2; ++side)
   {
     const int seg = 1 + side;
     if (limbs[side]->Chosen())
-    {
       plan.graftDiametersMm[std::size_t(seg)] = limbs[side]->diameterMm;
-      graftParams.balloonRadiusMm[std::size_t(seg)] = limbs[side]->diameterMm / 2.0;
-      continue;
-    }
     std::vector<double> means;
     for (const RingDiameters& r : plan.measurements.profiles[std::size_t(seg)].rings)
       if (std::isfinite(r.meanMm))
         means.push_back(r.meanMm);
-    graftParams.balloonRadiusMm[std::size_t(seg)] =
-      means.empty() ? params.graft.balloonRadiusMm[std::size_t(seg)] : Median(means) / 2.0;
+    fallback[std::size_t(side)] = means.empty() ? 2.0 * params.graft.balloonRadiusMm[std::size_t(seg)] : Median(means);
   }
-  plan.graft = FitActiveContour(plan.mesh, wall, graftParams, report.Callback());
-  plan.fitCheck = CheckGraftFit(plan.mesh, plan.graft.V, plan.graft.wallDistanceMm, plan.measurements, plan.centerlines,
-                                plan.graftDiametersMm, FitCheckParams{}, &plan.vesselWall);
+  GraftLayout layout =
+    LayOutOnMeasureMesh(plan.mesh, plan.measurements, family.family, plan.graftDiametersMm, fallback);
+  plan.graft = DeployGraft(std::move(layout), wall, params.graft, report.Callback());
+  FitCheckContext context;
+  context.family = family.family;
+  context.limbSized = { limbs[0]->Chosen(), limbs[1]->Chosen() };
+  context.minimumIliacSealMm = params.catalog.families[std::size_t(family.catalogIndex)].ifu.iliacSealLengthMm.min;
+  plan.fitCheck = CheckGraftFit(plan.graft, plan.measurements, plan.centerlines, &plan.vesselWall, context);
   plan.simulatedFamily = chosen;
   std::string findings;
   for (const std::string& f : plan.fitCheck.findings)
@@ -252,14 +308,83 @@ void SimulateTheMainBodyOnly(const WallDistanceField& wall,
   AddDeviceRows(params.catalog, plan);
 }
 
+/// The ordered configuration deployed at its target (DeployGraft.h) and its fit check, with the
+/// configuration's findings.
+void SimulateTheConfiguration(const PlanParams& params, const StageReporter& report, RepairPlan& plan)
+{
+  report.Begin("SimulateGraft", "Deploying the ordered stent graft in the vessel");
+  plan.simulatedFamily = plan.orderedFamily;
+  const FamilyEvaluation& family = plan.selection.families[std::size_t(plan.orderedFamily)];
+  const DeviceConfiguration& configuration = family.configuration;
+  GraftLayout layout =
+    LayOutGraft(plan.centerlines, plan.measurements, configuration, plan.deploymentTargetAbscissaMm, params.mesh);
+  plan.graftDiametersMm = { layout.components.front().item.diameterMm, std::numeric_limits<double>::quiet_NaN(),
+                            std::numeric_limits<double>::quiet_NaN() };
+  for (const ConfiguredComponent& part : layout.components)
+    if (part.role != OrderRole::MainBody &&
+        part.distalMm >= configuration.coveredLengthMm[std::size_t(part.side)] - 1e-9)
+      plan.graftDiametersMm[std::size_t(1 + part.side)] = part.item.distalDiameterMm;
+  const int ipsi = configuration.ipsilateralSide;
+  if (std::isnan(plan.graftDiametersMm[std::size_t(1 + ipsi)])) // the main body's own leg lands
+    plan.graftDiametersMm[std::size_t(1 + ipsi)] = layout.components.front().item.distalDiameterMm;
+  const WallDistanceField wall =
+    WallDistanceField::FromLumen(*plan.lumen.mask, 5.0, StentReach(layout.mesh, plan.centerlines));
+  plan.graft = DeployGraft(std::move(layout), wall, params.graft, report.Callback());
+  if (!plan.graft.fit.converged)
+    report.Warn("The simulated graft did not converge within " + std::to_string(plan.graft.fit.iterations) +
+                " iterations; the surface written is the last one.");
+  const DeviceFamily& catalogued = params.catalog.families[std::size_t(family.catalogIndex)];
+  FitCheckContext context;
+  context.family = family.family;
+  context.minimumIliacSealMm = catalogued.ifu.iliacSealLengthMm.min;
+  context.minimumOverlapMm = catalogued.junctions.overlapMm.min;
+  context.configurationFindings = configuration.findings;
+  plan.fitCheck = CheckGraftFit(plan.graft, plan.measurements, plan.centerlines, &plan.vesselWall, context);
+  if (plan.selection.recommended < 0)
+    report.Warn("No device is within its instructions for use; the graft simulated is the nearest, " + family.family +
+                " (outside its IFU).");
+  AddDeviceRows(params.catalog, plan);
+}
+
+/// One warning naming the levels sized on the lumen (the outer wall not traced there).
+void WarnSizedOnLumen(const DeviceSelection& selection, const StageReporter& report)
+{
+  std::vector<std::string> levels;
+  for (const FamilyEvaluation& e : selection.families)
+    for (const std::string& level : e.estimatedFromLumen)
+      if (std::find(levels.begin(), levels.end(), level) == levels.end())
+        levels.push_back(level);
+  if (levels.empty())
+    return;
+  std::string names;
+  for (const std::string& level : levels)
+    names += (names.empty() ? "" : ", ") + level;
+  report.Warn("The outer wall was not traced at " + names +
+              ": the device is sized on the lumen there, so its sizes are estimated (lumen) and the IFU result is "
+              "indeterminate.");
+}
+
 void ChooseAndSimulateDevice(const WallDistanceField& wall,
                              const PlanRequest& request,
                              const PlanParams& params,
                              const StageReporter& report,
                              RepairPlan& plan)
 {
-  report.Begin("SelectDevice", "Choosing the stent graft from the device catalogue");
-  plan.selection = SelectDevice(SizingFromMeasurements(plan.measurements), params.catalog, params.selection);
+  report.Begin("SelectDevice", "Choosing the stent graft from the device catalogue and its components");
+  const SizingAnatomy sizing = SizingFromMeasurements(plan.measurements);
+  plan.deploymentTargetAbscissaMm = plan.measurements.site.abscissaMm + params.deploymentOffsetMm;
+  const ConfigurationAnatomy lengths =
+    ConfigurationLengths(plan.centerlines, plan.measurements, plan.deploymentTargetAbscissaMm);
+  plan.selection = SelectDevice(sizing, params.catalog, params.selection, &lengths);
+  WarnSizedOnLumen(plan.selection, report);
+  plan.orderedFamily = FamilyForMainBody(plan.selection);
+  AddOrderRows(plan);
+  const DeviceConfiguration* configuration = plan.Configuration();
+  if (configuration && configuration->configured)
+  {
+    SimulateTheConfiguration(params, report, plan);
+    return;
+  }
   plan.simulatedFamily = FamilyToSimulate(plan.selection);
   // A partial plan whose scan ends above a limb's landing zone: nothing to size that limb on.
   const bool limbUnsized = std::isnan(plan.measurements.Value("rightIliacLumenDiameter")) ||
@@ -284,15 +409,21 @@ void ChooseAndSimulateDevice(const WallDistanceField& wall,
                       "available.");
     return;
   }
-  report.Begin("SimulateGraft", "Simulating the chosen stent graft in the vessel");
+  // The lengths could not be configured: the chosen diameters on the measured landing zones.
+  report.Begin("SimulateGraft", "Simulating the chosen diameters in the vessel (lengths not configured)");
   const FamilyEvaluation& family = plan.selection.families[plan.simulatedFamily];
   plan.graftDiametersMm = { family.mainBody.diameterMm, family.rightLimb.diameterMm, family.leftLimb.diameterMm };
-  ActiveContourParams graftParams = params.graft;
-  for (int s = 0; s < 3; ++s)
-    graftParams.balloonRadiusMm[s] = plan.graftDiametersMm[s] / 2.0;
-  plan.graft = FitActiveContour(plan.mesh, wall, graftParams, report.Callback());
-  plan.fitCheck = CheckGraftFit(plan.mesh, plan.graft.V, plan.graft.wallDistanceMm, plan.measurements, plan.centerlines,
-                                plan.graftDiametersMm, FitCheckParams{}, &plan.vesselWall);
+  GraftLayout layout = LayOutOnMeasureMesh(plan.mesh, plan.measurements, family.family, plan.graftDiametersMm,
+                                           { family.rightLimb.diameterMm, family.leftLimb.diameterMm });
+  plan.graft = DeployGraft(std::move(layout), wall, params.graft, report.Callback());
+  FitCheckContext context;
+  context.family = family.family;
+  context.minimumIliacSealMm = params.catalog.families[std::size_t(family.catalogIndex)].ifu.iliacSealLengthMm.min;
+  plan.fitCheck = CheckGraftFit(plan.graft, plan.measurements, plan.centerlines, &plan.vesselWall, context);
+  report.Warn("The " + family.family + " components' lengths could not be configured (" +
+              family.configuration.unknownReason +
+              "): the graft simulated has the chosen diameters over the measured landing zones, not the lengths "
+              "of a device that can be ordered.");
   if (plan.selection.recommended < 0)
     report.Warn("No device is within its instructions for use; the graft simulated is the nearest, " + family.family +
                 " (outside its IFU).");

@@ -6,8 +6,8 @@
 ///      ──► AssignInscribedRadii ──► FindProximalSite ──► BuildStentMesh ──► WallDistanceField
 ///      ──► FitActiveContour (acmMode) [──► FitActiveContour (measure) when acmMode is simulate]
 ///      ──► TraceVesselWall (outer wall, thrombus, calcium) [──► WallLabelMap when asked]
-///      ──► MeasureAnatomy ──► SelectDevice ──► FitActiveContour (simulate, the device's radii)
-///      ──► CheckGraftFit
+///      ──► MeasureAnatomy ──► SelectDevice (with ConfigureDevice: the components' lengths)
+///      ──► FitActiveContour (simulate, the device's radii) ──► CheckGraftFit
 ///
 /// `PlanRequest::through` says how far to go; each stage needs those before it. Stage names (the
 /// `name` passed to PlanObserver::begin, in this order): FindSeed (only without a seed), SegmentLumen, ThinLumen,
@@ -48,6 +48,7 @@
 #include "Centerlines/SkeletonGraph.h"
 #include "Common/Types.h"
 #include "Device/DeviceCatalog.h"
+#include "Device/DeployGraft.h"
 #include "Device/FitCheck.h"
 #include "Device/HostileNeck.h"
 #include "Device/SelectDevice.h"
@@ -107,6 +108,9 @@ struct PlanParams
   /// from the chosen device's diameters.
   ActiveContourParams graft = ActiveContourParams::Simulate({ 24.0, 14.0, 14.0 });
   DeviceSelectionParams selection;
+  /// Where the main body's proximal edge is deployed: this far below the proximal site (the lower
+  /// edge of the lowest renal ostium) along the aorta, mm (negative: above it), in [−30, 60].
+  double deploymentOffsetMm = 0.0;
   /// The device catalogue (read and validated at the edge); needed when the plan reaches Device.
   DeviceCatalog catalog;
   /// The hostile-neck rules (read and validated at the edge); empty: the neck is not assessed.
@@ -151,9 +155,10 @@ struct RepairPlan
   NeckAssessment neck; ///< the hostile-neck rules on the measurements (empty without rules)
 
   DeviceSelection selection;
-  int simulatedFamily = -1;                                ///< index into selection.families; −1: no graft simulated
-  std::array<double, 3> graftDiametersMm{ 0.0, 0.0, 0.0 }; ///< main body, right limb, left limb
-  ActiveContourResult graft;                               ///< the simulated graft's surface
+  int simulatedFamily = -1; ///< index into selection.families; −1: no graft simulated
+  /// Main body (proximal), right and left landing diameters of the simulated graft, mm.
+  std::array<double, 3> graftDiametersMm{ 0.0, 0.0, 0.0 };
+  DeployedGraft graft; ///< the simulated graft: its layout (components per vertex) and fitted surface
   FitCheck fitCheck;
 
   /// Every warning, in the order they arose (also passed to PlanObserver::warn).
@@ -163,6 +168,17 @@ struct RepairPlan
 
   bool Reached(PlanStage stage) const { return static_cast<int>(reached) >= static_cast<int>(stage); }
   bool HasGraft() const { return simulatedFamily >= 0; }
+  /// Where the main body's proximal edge is deployed: along the aorta from its top, mm (the
+  /// proximal site + PlanParams::deploymentOffsetMm), when the plan reaches the device.
+  double deploymentTargetAbscissaMm = 0.0;
+  /// The family whose components the plan orders (FamilyForMainBody: the recommended one, else the
+  /// nearest with a main body); −1 when no family has a main body.
+  int orderedFamily = -1;
+  /// Its configuration (the order list), or nullptr when no family has a main body.
+  const DeviceConfiguration* Configuration() const
+  {
+    return orderedFamily >= 0 ? &selection.families[std::size_t(orderedFamily)].configuration : nullptr;
+  }
 };
 
 /// Runs the stages up to `request.through`; see the file comment. Without a seed the aorta is

@@ -75,7 +75,13 @@ const std::vector<std::string>& ReturnValueNames()
     "mainBodyDiameter",
     "rightLimbDiameter",
     "leftLimbDiameter",
+    "mainBodyLength",
+    "rightLimbLength",
+    "leftLimbLength",
+    "ipsilateralSideUsed",
+    "orderList",
     "withinIfu",
+    "ifuStatus",
     "proximalSealLength",
     "rightIliacSealLength",
     "leftIliacSealLength",
@@ -119,6 +125,11 @@ std::vector<PlanValue> PlanReturnValues(const RepairPlan& plan)
            selected));
   // Every criterion passed, none left indeterminate (a partial plan's limbs, a wall not seen).
   put(Boolean("withinIfu", selection.recommended >= 0 && selection.recommendedFullyChecked, selected));
+  put(Text("ifuStatus", ToString(selection.ifuStatus), selected));
+  const DeviceConfiguration* configuration = plan.Configuration();
+  put(Text("ipsilateralSideUsed", configuration && configuration->ipsilateralSide == 1 ? "left" : "right",
+           selected && configuration));
+  put(Text("orderList", configuration ? configuration->OrderList() : "", selected && configuration));
   const bool simulated = plan.HasGraft();
   put(Text("coveredOstia", plan.fitCheck.CoveredOstia(), simulated));
   put(Boolean("migrationRisk", plan.fitCheck.migrationRisk, simulated));

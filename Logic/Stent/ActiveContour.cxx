@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
+#include <Eigen/Geometry>
 #include <Eigen/SparseCholesky>
 
 #include "Common/CheckRange.h"
@@ -75,13 +77,17 @@ Points ActiveContourForces(const StentMesh& mesh,
       F.row(i) -= p.wallWeight * std::min(phi / p.wallSofteningMm, 1.0) * n.transpose();
       contact[i] = true;
     }
-    const double R = p.balloonRadiusMm[mesh.segment[i]];
+    const double R = BalloonRadius(mesh, p, i);
     if (r < R && r > 1e-9)
       F.row(i) += (contact[i] ? p.contactPressureFactor : 1.0) * p.balloonPressure * (R - r) * (out / r).transpose();
-    const Eigen::Vector3d a = mesh.axis.row(i).transpose();
-    F.row(i) -= p.ringPlaneWeight * (v - mesh.centre.row(i).transpose()).dot(a) * a.transpose();
   }
   return F;
+}
+
+double BalloonRadius(const StentMesh& mesh, const ActiveContourParams& p, Eigen::Index i)
+{
+  return p.vertexBalloonRadiusMm.empty() ? p.balloonRadiusMm[std::size_t(mesh.segment[i])]
+                                         : p.vertexBalloonRadiusMm[std::size_t(i)];
 }
 
 namespace
@@ -93,6 +99,69 @@ double WallPotential(double phi, double delta)
   if (phi <= 0.0)
     return 0.0;
   return phi < delta ? phi * phi / (2.0 * delta) : phi - 0.5 * delta;
+}
+
+/// Each vertex's ring plane: an orthonormal basis (u, w) ⊥ its ring's axis, u along its initial
+/// radial direction where it has one.
+struct RingPlanes
+{
+  Points u, w; ///< #V×3
+};
+
+RingPlanes MakeRingPlanes(const StentMesh& mesh)
+{
+  const Eigen::Index n = mesh.V.rows();
+  RingPlanes planes{ Points(n, 3), Points(n, 3) };
+  for (Eigen::Index i = 0; i < n; ++i)
+  {
+    const Eigen::Vector3d a = mesh.axis.row(i).transpose().normalized();
+    Eigen::Vector3d u = RadialOffset(mesh, i, mesh.V.row(i).transpose());
+    u = u.norm() > 1e-9 ? Eigen::Vector3d(u.normalized()) : a.unitOrthogonal();
+    planes.u.row(i) = u.transpose();
+    planes.w.row(i) = a.cross(u).transpose();
+  }
+  return planes;
+}
+
+/// K_r = Uᵀ (K ⊗ I₃) U: block (i, j) is K_ij · U_iᵀ U_j (2×2), in the order (q_0u, q_0w, q_1u, …).
+SparseMatrix ReducedStiffness(const SparseMatrix& K, const RingPlanes& planes)
+{
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(std::size_t(K.nonZeros()) * 4);
+  for (int col = 0; col < K.outerSize(); ++col)
+    for (SparseMatrix::InnerIterator it(K, col); it; ++it)
+    {
+      const Eigen::Index i = it.row(), j = it.col();
+      const Eigen::Vector3d basis[2][2] = { { planes.u.row(i).transpose(), planes.w.row(i).transpose() },
+                                            { planes.u.row(j).transpose(), planes.w.row(j).transpose() } };
+      for (int a = 0; a < 2; ++a)
+        for (int b = 0; b < 2; ++b)
+          entries.emplace_back(int(2 * i + a), int(2 * j + b), it.value() * basis[0][a].dot(basis[1][b]));
+    }
+  SparseMatrix Kr(2 * K.rows(), 2 * K.cols());
+  Kr.setFromTriplets(entries.begin(), entries.end());
+  return Kr;
+}
+
+/// Uᵀ X for X #V×3: the in-plane components, stacked (#2V).
+Eigen::VectorXd ToPlane(const RingPlanes& planes, const Eigen::MatrixXd& X)
+{
+  Eigen::VectorXd q(2 * X.rows());
+  for (Eigen::Index i = 0; i < X.rows(); ++i)
+  {
+    q[2 * i] = X.row(i).dot(planes.u.row(i));
+    q[2 * i + 1] = X.row(i).dot(planes.w.row(i));
+  }
+  return q;
+}
+
+/// V = C + U q.
+Eigen::MatrixXd FromPlane(const RingPlanes& planes, const StentMesh& mesh, const Eigen::VectorXd& q)
+{
+  Eigen::MatrixXd V = mesh.centre;
+  for (Eigen::Index i = 0; i < V.rows(); ++i)
+    V.row(i) += q[2 * i] * planes.u.row(i) + q[2 * i + 1] * planes.w.row(i);
+  return V;
 }
 
 } // namespace
@@ -124,7 +193,8 @@ void ValidateActiveContourParams(const ActiveContourParams& p)
   CheckRange("wallSofteningMm", p.wallSofteningMm, 1e-3, 10, "mm");
   CheckRange("balloonPressure", p.balloonPressure, 0, 1e2, "");
   CheckRange("contactPressureFactor", p.contactPressureFactor, 0, 1, "");
-  CheckRange("ringPlaneWeight", p.ringPlaneWeight, 0, 1e2, "");
+  for (std::size_t i = 0; i < p.vertexBalloonRadiusMm.size(); ++i)
+    CheckRange("balloon radius of vertex " + std::to_string(i), p.vertexBalloonRadiusMm[i], 1e-3, 200, "mm");
   const char* names[3] = { "trunk balloon radius", "right leg balloon radius", "left leg balloon radius" };
   for (int s = 0; s < 3; ++s)
     CheckRange(names[s], p.balloonRadiusMm[s], 1e-3, 200, "mm");
@@ -146,11 +216,9 @@ double ActiveContourEnergy(const StentMesh& mesh,
     energy += p.wallWeight * WallPotential(EffectiveWallDistance(mesh, wall, i, v, nullptr), p.wallSofteningMm);
     const bool held = !contact.empty() && contact[std::size_t(i)];
     const double r = RadialOffset(mesh, i, v).norm();
-    const double R = p.balloonRadiusMm[mesh.segment[i]];
+    const double R = BalloonRadius(mesh, p, i);
     if (r < R)
       energy += 0.5 * (held ? p.contactPressureFactor : 1.0) * p.balloonPressure * (R - r) * (R - r);
-    const double along = (v - mesh.centre.row(i).transpose()).dot(mesh.axis.row(i).transpose());
-    energy += 0.5 * p.ringPlaneWeight * along * along;
   }
   return energy;
 }
@@ -161,10 +229,16 @@ ActiveContourResult FitActiveContour(const StentMesh& mesh,
                                      const ProgressCallback& progress)
 {
   ValidateActiveContourParams(p);
+  const Eigen::Index n = mesh.V.rows();
+  if (!p.vertexBalloonRadiusMm.empty() && Eigen::Index(p.vertexBalloonRadiusMm.size()) != n)
+    throw InputError("The active contour was given " + std::to_string(p.vertexBalloonRadiusMm.size()) +
+                     " per-vertex balloon radii; expected one per vertex of the mesh, " + std::to_string(n) + ".");
   const SparseMatrix K = AssembleStiffnessMatrix(mesh, p.weights);
-  SparseMatrix A(K.rows(), K.cols());
+  const RingPlanes planes = MakeRingPlanes(mesh);
+  const SparseMatrix Kr = ReducedStiffness(K, planes);
+  SparseMatrix A(2 * n, 2 * n);
   A.setIdentity();
-  A += p.tau * K;
+  A += p.tau * Kr;
   Eigen::SimplicialLDLT<SparseMatrix> solver;
   ActiveContourResult result;
   const auto factor = [&]
@@ -173,19 +247,27 @@ ActiveContourResult FitActiveContour(const StentMesh& mesh,
     ++result.factorizations;
   };
   factor();                            // once per run: every step below reuses it
-  if (solver.info() != Eigen::Success) // cannot happen: I + τK is symmetric positive definite
-    throw std::logic_error("ActiveContour: the LDLT factorization of I + tau K failed");
-  Eigen::MatrixXd V = mesh.V;
-  std::vector<bool> contact(static_cast<std::size_t>(V.rows()), false);
+  if (solver.info() != Eigen::Success) // cannot happen: I + τK_r is symmetric positive definite
+    throw std::logic_error("ActiveContour: the LDLT factorization of I + tau K_r failed");
+  // The constant part of the internal force in plane coordinates: Uᵀ K C.
+  const Eigen::MatrixXd KC = K * mesh.centre;
+  const Eigen::VectorXd g = ToPlane(planes, KC);
+  Eigen::VectorXd q = ToPlane(planes, Eigen::MatrixXd(mesh.V - mesh.centre));
+  Eigen::MatrixXd V = FromPlane(planes, mesh, q);
+  std::vector<bool> contact(static_cast<std::size_t>(n), false);
   result.energy.push_back(ActiveContourEnergy(mesh, K, wall, p, contact, V));
   for (int step = 1; step <= p.maxIterations; ++step)
   {
-    const Eigen::MatrixXd b = V + p.tau * Eigen::MatrixXd(ActiveContourForces(mesh, wall, p, contact, V));
-    const Eigen::MatrixXd next = solver.solve(b);
+    const Points F = ActiveContourForces(mesh, wall, p, contact, V);
+    const Eigen::VectorXd b = q + p.tau * (ToPlane(planes, F) - g);
+    const Eigen::VectorXd next = solver.solve(b);
     result.maxRelativeResidual =
       std::max(result.maxRelativeResidual, (A * next - b).norm() / std::max(b.norm(), 1e-300));
-    const double moved = (next - V).rowwise().norm().maxCoeff();
-    V = next;
+    double moved = 0.0;
+    for (Eigen::Index i = 0; i < n; ++i)
+      moved = std::max(moved, std::hypot(next[2 * i] - q[2 * i], next[2 * i + 1] - q[2 * i + 1]));
+    q = next;
+    V = FromPlane(planes, mesh, q);
     result.iterations = step;
     result.energy.push_back(ActiveContourEnergy(mesh, K, wall, p, contact, V));
     ReportProgress(progress, double(step) / p.maxIterations, "Active contour");
@@ -197,12 +279,14 @@ ActiveContourResult FitActiveContour(const StentMesh& mesh,
   }
   result.verticesInContact = static_cast<int>(std::count(contact.begin(), contact.end(), true));
   result.V = V;
-  result.wallDistanceMm.resize(V.rows());
-  result.radiusMm.resize(V.rows());
-  for (Eigen::Index i = 0; i < V.rows(); ++i)
+  result.wallDistanceMm.resize(n);
+  result.radiusMm.resize(n);
+  for (Eigen::Index i = 0; i < n; ++i)
   {
     result.wallDistanceMm[i] = wall.Sample(V.row(i).transpose());
     result.radiusMm[i] = RadialOffset(mesh, i, V.row(i).transpose()).norm();
+    result.maxAxialOffsetMm =
+      std::max(result.maxAxialOffsetMm, std::abs((V.row(i) - mesh.centre.row(i)).dot(mesh.axis.row(i))));
   }
   ReportProgress(progress, 1.0, "Done");
   return result;

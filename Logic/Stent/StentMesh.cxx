@@ -60,6 +60,28 @@ void PropagateFrames(RingFrames& f, int from, double handedness)
     f.v[i] = handedness * f.tangent[i].cross(f.u[i]);
 }
 
+/// Ring positions from `from` to `to` (inclusive), through every `required` position strictly
+/// between them (StentMeshParams::requiredRingAbscissaMm), each stretch evenly spaced at most
+/// `spacing` apart.
+std::vector<double> RingsThrough(double from, double to, double spacing, std::vector<double> required)
+{
+  std::sort(required.begin(), required.end());
+  std::vector<double> stops{ from };
+  for (double r : required)
+    if (r > from + RequiredRingSnapMm && r < to - RequiredRingSnapMm && r > stops.back() + RequiredRingSnapMm)
+      stops.push_back(r);
+  stops.push_back(to);
+  std::vector<double> rings{ from };
+  for (std::size_t k = 1; k < stops.size(); ++k)
+  {
+    const double a = stops[k - 1], b = stops[k];
+    const int intervals = std::max(1, static_cast<int>(std::ceil((b - a) / spacing - 1e-9)));
+    for (int i = 1; i <= intervals; ++i)
+      rings.push_back(a + (b - a) * i / intervals);
+  }
+  return rings;
+}
+
 RingFrames Rings(const Centerline& c, const std::vector<double>& positions)
 {
   RingFrames f;
@@ -98,6 +120,9 @@ void ValidateStentMeshParams(const StentMeshParams& p)
   CheckRange("startRadiusMm", p.startRadiusMm, 0.5, 30, "mm");
   CheckRange("proximalAbscissaMm", p.proximalAbscissaMm, -1, 1e4, "mm");
   CheckRange("legLengthMm", p.legLengthMm, 0, 1e3, "mm");
+  for (double end : p.legEndAbscissaMm)
+    if (!std::isnan(end))
+      CheckRange("legEndAbscissaMm", end, p.startRadiusMm, 1e3, "mm");
 }
 
 StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& p)
@@ -107,15 +132,12 @@ StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& p)
   const double gap = 3.0 * p.startRadiusMm;
   // Ring positions: the trunk measured up from its junction end, the legs down from theirs.
   std::vector<double> trunk;
-  const double trunkEnd = tree.aorta.LengthMm() - gap;
+  const double trunkEnd = std::isfinite(p.trunkEndAbscissaMm)
+                            ? std::min(p.trunkEndAbscissaMm, tree.aorta.LengthMm() - 1.0)
+                            : tree.aorta.LengthMm() - gap;
   const double proximal = p.proximalAbscissaMm >= 0.0 ? p.proximalAbscissaMm : FindProximalSite(tree).abscissaMm;
-  if (trunkEnd > proximal)
-  {
-    // Evenly spaced, at most ringSpacingMm apart, the first ring at the proximal site.
-    const int intervals = static_cast<int>(std::ceil((trunkEnd - proximal) / p.ringSpacingMm - 1e-9));
-    for (int k = 0; k <= intervals; ++k)
-      trunk.push_back(proximal + (trunkEnd - proximal) * k / intervals);
-  }
+  if (trunkEnd > proximal) // evenly spaced, at most ringSpacingMm apart, the first ring at the proximal site
+    trunk = RingsThrough(proximal, trunkEnd, p.ringSpacingMm, p.requiredRingAbscissaMm[TrunkSegment]);
   std::array<std::vector<double>, 2> legs;
   const Centerline* iliac[2] = { &tree.rightIliac, &tree.leftIliac };
   for (int side = 0; side < 2; ++side)
@@ -128,6 +150,21 @@ StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& p)
       length = std::isfinite(origin) ? origin - gap - 5.0 : 60.0;
     }
     const double iliacLength = iliac[side]->LengthMm();
+    const double end = p.legEndAbscissaMm[std::size_t(side)];
+    if (std::isfinite(end))
+    {
+      if (end > iliacLength + 1e-6)
+        throw InputError(std::string(side == 0 ? "The right" : "The left") + " leg is to end " + FormatNumber(end) +
+                         " mm down its iliac, beyond the " + FormatNumber(iliacLength) +
+                         " mm of it in the scan; give a scan that covers the iliac arteries there.");
+      const double start = p.legStartAbscissaMm[std::size_t(side)];
+      const double first = std::isfinite(start)           ? std::max(LegStartMinimumMm, std::min(start, gap))
+                           : end - gap >= p.ringSpacingMm ? gap
+                                                          : std::max(p.startRadiusMm, end - p.ringSpacingMm);
+      if (end > first)
+        legs[side] = RingsThrough(first, end, p.ringSpacingMm, p.requiredRingAbscissaMm[std::size_t(1 + side)]);
+      continue;
+    }
     if (std::isfinite(tree.iliacCoverageMm[side]) && iliacLength < gap + p.ringSpacingMm)
     {
       // The scan cuts this iliac short (a partial plan): the leg's rings are evenly spaced over the
@@ -141,7 +178,15 @@ StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& p)
       continue;
     }
     length = std::min(length, iliacLength - gap);
-    for (double s = gap; s <= gap + length + 1e-9; s += p.ringSpacingMm)
+    double first = gap;
+    if (length < p.ringSpacingMm && p.legLengthMm <= 0.0)
+    {
+      // A short common iliac: two rings ending where the leg should end, the first moved up
+      // toward the junction (but at least a stent radius down it, where the two legs part).
+      first = std::max(p.startRadiusMm, gap + length - p.ringSpacingMm);
+      length = p.ringSpacingMm;
+    }
+    for (double s = first; s <= first + length + 1e-9; s += p.ringSpacingMm)
       legs[side].push_back(s);
   }
   if (trunk.size() < 2 || legs[0].size() < 2 || legs[1].size() < 2)

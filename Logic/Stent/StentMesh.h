@@ -17,9 +17,10 @@
 /// lies exactly at the site (measurement (a) is read there); each leg starts 3 × startRadiusMm
 /// down its iliac (so the two first leg rings do not touch) and runs
 /// `legLengthMm` (0: to 5 mm above the internal iliac origin where the axes meet — VesselOrigins.h —, or 60 mm
-/// without one). On an iliac the scan cuts short (CenterlineTree::iliacCoverageMm, a partial plan)
-/// with no room for that, the leg's rings are evenly spaced over the stretch in view instead
-/// (from min(3 × startRadiusMm, L/3) to L − min(1 mm, L/3), at most ringSpacingMm apart; L its
+/// without one; a common iliac too short for two rings that way gets two rings ending there, the
+/// first moved up toward the junction, but at least startRadiusMm down the iliac). On an iliac the scan cuts short
+/// (CenterlineTree::iliacCoverageMm, a partial plan) with no room for that, the leg's rings are evenly spaced over the
+/// stretch in view instead (from min(3 × startRadiusMm, L/3) to L − min(1 mm, L/3), at most ringSpacingMm apart; L its
 /// centerline's length): the leg only carries the connection element, nothing is read off it.
 ///
 /// **Connection element.** Stiffness acts along *s-chains* (vertex sequences along the vessel)
@@ -39,6 +40,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <vector>
 
 #include "Centerlines/Centerlines.h"
@@ -63,7 +65,34 @@ struct StentMeshParams
   /// proximal implantation site detected from the renal branches (FindProximalSite), or the top.
   double proximalAbscissaMm = -1.0;
   double legLengthMm = 0.0; ///< 0 = to the internal iliac origin (60 mm without one)
+  /// Where each leg's last ring lies, as arc length along its iliac (right, left), mm; NaN: by
+  /// legLengthMm. Given (a graft whose limbs end there: DeployGraft.h), the leg's rings are evenly
+  /// spaced, at most ringSpacingMm apart, from 3 × startRadiusMm (or, for a leg shorter than one
+  /// spacing beyond that, from one spacing above its end, but at least startRadiusMm down the
+  /// iliac) to exactly there; beyond the iliac's end in view it is an InputError.
+  std::array<double, 2> legEndAbscissaMm{ std::numeric_limits<double>::quiet_NaN(),
+                                          std::numeric_limits<double>::quiet_NaN() };
+  /// Where the trunk's last ring lies along the aorta, mm; NaN: 3 × startRadiusMm above the aortic
+  /// centerline's end. Given (DeployGraft.h: a component ending nearer the bifurcation), at most
+  /// 1 mm above that end.
+  double trunkEndAbscissaMm = std::numeric_limits<double>::quiet_NaN();
+  /// Where each leg with legEndAbscissaMm starts along its iliac, mm; NaN: 3 × startRadiusMm down
+  /// it (or less on a short leg, as said there). Given, at least LegStartMinimumMm down it.
+  std::array<double, 2> legStartAbscissaMm{ std::numeric_limits<double>::quiet_NaN(),
+                                            std::numeric_limits<double>::quiet_NaN() };
+  /// Per segment, abscissae (along its centerline, mm) at which a ring must lie — a graft's
+  /// component ends (DeployGraft.h). Those strictly inside the segment's stretch (more than
+  /// `RequiredRingSnapMm` from its ends and from each other; a closer one is dropped) get a ring,
+  /// and the rings between are evenly spaced, at most ringSpacingMm apart. Ignored on a leg
+  /// without legEndAbscissaMm.
+  std::array<std::vector<double>, 3> requiredRingAbscissaMm;
 };
+
+/// Required ring positions this close to a segment's end or to each other are one ring, mm.
+constexpr double RequiredRingSnapMm = 0.5;
+/// The nearest a leg given its start may begin to its iliac's first point, mm: the two legs' first
+/// rings stay apart there (the crotch plane holds their medial sides: ActiveContour.h).
+constexpr double LegStartMinimumMm = 1.0;
 
 struct StentMesh
 {

@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include "Measurement/MeasureDiameters.h"
+#include "Views/SceneMeshes.h"
 
 namespace sgp
 {
@@ -65,6 +66,49 @@ void AddEdges(const OuterWall& wall, const std::string& vessel, StraightenedFigu
   }
 }
 
+/// Each component's simulated extent on `side`'s path (ReportFigures.h), and the whole graft's.
+void AddSimulatedComponents(const DeployedGraft& graft, int side, StraightenedFigure& f)
+{
+  const GraftLayout& g = graft.layout;
+  const StentMesh& mesh = g.mesh;
+  const int ipsilateral = g.configured ? g.ipsilateralSide : side;
+  for (int index = 0; index < int(g.components.size()); ++index)
+  {
+    const ConfiguredComponent& part = g.components[std::size_t(index)];
+    if (part.role != OrderRole::MainBody && part.side != side)
+      continue;
+    double from = std::numeric_limits<double>::infinity(), to = -from;
+    for (int seg : { int(TrunkSegment), 1 + side })
+      for (int k = 0; k < mesh.RingsIn(seg); ++k)
+      {
+        Point3 centroid = Point3::Zero();
+        bool carries = false;
+        for (int j = 0; j < mesh.verticesPerRing; ++j)
+        {
+          const int i = mesh.Id(seg, k, j);
+          centroid += graft.fit.V.row(i).transpose();
+          carries = carries || (g.side[i] == side && (g.component[i] == index || g.innerComponent[i] == index));
+        }
+        if (!carries)
+          continue;
+        const double s = f.path.Project(centroid / mesh.verticesPerRing);
+        from = std::min(from, s);
+        to = std::max(to, s);
+      }
+    if (!std::isfinite(from))
+      continue;
+    std::string label = part.role == OrderRole::MainBody ? "main body" : part.item.name;
+    if (part.role == OrderRole::IpsilateralLimb || part.role == OrderRole::ContralateralLimb)
+      label = std::string(part.role == OrderRole::IpsilateralLimb ? "ipsilateral" : "contralateral") + " limb";
+    else if (part.role == OrderRole::IliacExtension)
+      label = "iliac extension";
+    (void)ipsilateral;
+    f.components.push_back({ label, ComponentColour(part), from, to });
+    f.graftStartMm = std::isnan(f.graftStartMm) ? from : std::min(f.graftStartMm, from);
+    f.graftEndMm = std::isnan(f.graftEndMm) ? to : std::max(f.graftEndMm, to);
+  }
+}
+
 StraightenedFigure Straighten(const RepairPlan& plan,
                               const CtImage& ct,
                               const std::vector<SizingLevel>& levels,
@@ -91,11 +135,8 @@ StraightenedFigure Straighten(const RepairPlan& plan,
       continue;
     f.landmarks.push_back({ l.name, f.path.Project(l.lps), 0.0 });
   }
-  if (plan.HasGraft() && !plan.mesh.ringAbscissaMm[0].empty() && !plan.mesh.ringAbscissaMm[1 + side].empty())
-  {
-    f.graftStartMm = plan.mesh.ringAbscissaMm[0].front();
-    f.graftEndMm = f.path.PathAbscissa(iliac.name, plan.mesh.ringAbscissaMm[1 + side].back());
-  }
+  if (plan.HasGraft())
+    AddSimulatedComponents(plan.graft, side, f);
   return f;
 }
 
@@ -220,6 +261,17 @@ ReportFigures BuildReportFigures(const RepairPlan& plan, const CtImage& ct, cons
   for (const SizingLevel& level : levels)
     if (std::isfinite(level.abscissaMm) && plan.centerlines.FindVessel(level.vessel))
       figures.sections.push_back(Section(plan, ct, level, params));
+  if (plan.HasGraft())
+  {
+    const std::array<Point3, 2> box = GraftBox(plan.graft, 25.0);
+    const std::vector<SceneMesh> scene = { LumenSurface(*plan.lumen.mask, box[0], box[1]),
+                                           OuterWallSurface(plan.vesselWall), GraftSurface(plan.graft) };
+    for (const SceneView& view : { AnteriorView(), LeftLateralView() })
+    {
+      figures.graftViews.push_back(RenderScene(scene, view, 420));
+      figures.graftViewNames.push_back(view.name);
+    }
+  }
   return figures;
 }
 

@@ -10,6 +10,9 @@
 /// patient's left, v posterior: ResliceCt.h). Levels sit at the Measurement's own abscissa (the
 /// ring the value was read on: (a)–(d); the middle of the landing zone: (e), (f)).
 ///
+/// With a simulated graft, each component's simulated extent on the straightened views and the
+/// graft's 3-D views (SceneMeshes.h).
+///
 /// Needs a plan that reached the measurements (RepairPlan::Reached(Measurements)) and the CT the
 /// plan was made from (or a crop of it that holds ±halfWidthMm around every centerline; samples
 /// outside it read −1024 HU). A level that was not measured (NaN) has no cross-section and no mark.
@@ -22,6 +25,7 @@
 #include <vector>
 
 #include "Pipeline/PlanRepair.h"
+#include "Views/RenderScene.h"
 #include "Views/ResliceCt.h"
 #include "Views/VesselPath.h"
 
@@ -53,6 +57,15 @@ struct SizingLevel
   double abscissaMm = std::numeric_limits<double>::quiet_NaN(); ///< along `vessel`
 };
 
+/// A component's simulated extent along a straightened view's path.
+struct ComponentExtent
+{
+  std::string label; ///< "main body", "left contralateral limb", …
+  Eigen::Vector3d rgb = Eigen::Vector3d::Zero();
+  double fromMm = 0.0; ///< path abscissae
+  double toMm = 0.0;
+};
+
 struct StraightenedFigure
 {
   VesselPath path;
@@ -64,6 +77,10 @@ struct StraightenedFigure
   /// The simulated graft's extent (its first trunk ring to this leg's last ring); NaN: none simulated.
   double graftStartMm = std::numeric_limits<double>::quiet_NaN();
   double graftEndMm = std::numeric_limits<double>::quiet_NaN();
+  /// Each component on this side's path as simulated: from the first to the last ring of the fitted
+  /// surface that carries it (as the outer component or the one inserted), the rings' centroids
+  /// projected onto the path — not the planned extent.
+  std::vector<ComponentExtent> components;
 };
 
 struct CrossSectionFigure
@@ -80,6 +97,11 @@ struct ReportFigures
 {
   std::array<StraightenedFigure, 2> straightened; ///< right, left
   std::vector<CrossSectionFigure> sections;       ///< (a)–(f) that were measured, in order
+  /// The simulated graft in the vessel from the front and from the left (RenderScene.h: the lumen
+  /// and outer wall translucent, the components in their colours), within 25 mm of the graft;
+  /// empty when no graft was simulated.
+  std::vector<RenderedImage> graftViews;
+  std::vector<std::string> graftViewNames;
 };
 
 /// The six sizing levels of `measurements` (NaN abscissa where not measured).

@@ -28,6 +28,8 @@ TEST(SyntheticAorticPhantomXml, Defaults_EqualPhantomParams)
   EXPECT_EQ(distalNeckDiameterMm, d.distalNeckDiameterMm);
   EXPECT_EQ(rightIliacDiameterMm, d.rightIliacDiameterMm);
   EXPECT_EQ(leftIliacDiameterMm, d.leftIliacDiameterMm);
+  EXPECT_EQ(rightCommonIliacLengthMm, d.rightCommonIliacLengthMm);
+  EXPECT_EQ(leftCommonIliacLengthMm, d.leftCommonIliacLengthMm);
   EXPECT_EQ(lumenHu, d.lumenHu);
   EXPECT_EQ(tissueHu, d.tissueHu);
   EXPECT_EQ(blurSigmaMm, d.blurSigmaMm);

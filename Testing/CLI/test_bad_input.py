@@ -298,6 +298,27 @@ def main():
             json.dump(entries, handle)
         bad_case(cli, workdir, "catalogue-wrong-type", volume, valid_seed + measure + ["--deviceCatalog", broken],
                  [broken, family, "ifu.neckDiameterMm.max", "thirty-two"])
+        # The component defects issue 29 names: each one ERROR: line naming file, family,
+        # component and field, and no output left behind.
+        planted = [
+            ("catalogue-negative-length", lambda e: e["families"][0]["limbs"]["items"][2].update(lengthMm=-124),
+             ["limbs.items[2]", "lengthMm", "-124 mm"]),
+            ("catalogue-gate-beyond-body", lambda e: e["families"][0]["mainBodies"]["items"][0].update(gateEndMm=130),
+             ["mainBodies.items[0]", "gateEndMm", "beyond the body's covered length"]),
+            ("catalogue-overlap-above-gate", lambda e: e["families"][0]["junctions"]["overlapMm"].update(min=40),
+             ["junctions.overlapMm.min", "40 mm, longer than the 34 mm contralateral gate", "mainBodies.items[0]"]),
+            ("catalogue-missing-code", lambda e: e["families"][2]["limbs"]["items"][4].pop("code"),
+             ["limbs.items[4]", "'code'", "is missing"]),
+        ]
+        for name, plant, parts in planted:
+            with open(catalogue, encoding="utf-8") as handle:
+                entries = json.load(handle)
+            plant(entries)
+            with open(broken, "w", encoding="utf-8") as handle:
+                json.dump(entries, handle)
+            family = entries["families"][2 if "missing-code" in name else 0]["name"]
+            bad_case(cli, workdir, name, volume, valid_seed + measure + ["--deviceCatalog", broken],
+                     [broken, family, "component"] + parts)
         bad_case(cli, workdir, "unknown-device", volume, valid_seed + measure + ["--device", "NoSuchGraft"],
                  ["NoSuchGraft", catalogue])
         bad_case(cli, workdir, "inverted-oversizing", volume,

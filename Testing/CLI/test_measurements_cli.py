@@ -31,6 +31,7 @@ import argparse
 import csv
 import json
 import os
+import re
 import sys
 
 import numpy as np
@@ -124,7 +125,7 @@ def check_run(label, returned, files, truth, expect_source, shift_mm):
 
     table = read_table(files["outputMeasurements"]) if os.path.isfile(files["outputMeasurements"]) else []
     header = ["name", "value", "unit", "definition", "vessel", "abscissaMm", "minDiameterMm", "maxDiameterMm",
-              "areaDiameterMm", "wall", "estimated"]
+              "areaDiameterMm", "wall", "estimated", "label", "shown"]
     check(table and table[0] == header, f"{label}: measurements table has the declared header",
           str(table[:1]))
     rows = {row[0]: row for row in table[1:] if row}
@@ -139,6 +140,13 @@ def check_run(label, returned, files, truth, expect_source, shift_mm):
         same = name in values and row[1] != "" and abs(float(row[1]) - values[name]) <= 1e-6 * max(1, abs(values[name]))
         check(same, f"{label}: table {name} equals the returned value", f"{row[1]} vs {values.get(name)}")
         check(row[2] != "" and len(row[3]) > 20, f"{label}: table {name} has a unit and a definition", str(row[2:4]))
+        # What a person reads (issue 30): the value in words and at clinical precision, 0.1 mm / 0.1 deg /
+        # 1 % / 0.01 for a ratio / 0.1 mL, with its unit.
+        decimals = {"mm": 1, "deg": 1, "%": 0, "ratio": 2, "mL": 1}.get(row[2], 1)
+        number = re.match(r"^(-?\d+(?:\.\d+)?)", row[12])
+        check(len(row[11]) > 5 and " " in row[11] and number is not None
+              and number.group(1) == f"{float(row[1]):.{decimals}f}",
+              f"{label}: table {name} is shown in words at clinical precision", f"{row[11]!r}: {row[12]!r}")
 
     profile = read_table(files["outputDiameterProfile"]) if os.path.isfile(files["outputDiameterProfile"]) else []
     check(profile and profile[0][:3] == ["vessel", "abscissaMm", "meanDiameterMm"],

@@ -103,16 +103,25 @@ def blank(pixels):
 
 
 class DataNames(html.parser.HTMLParser):
-    """The text of every element with a data-name attribute, and the level marks' data-path-mm."""
+    """The text of every element with a data-name attribute (and its data-value, the return file's
+    text), the level marks' data-path-mm, and the simulated components' extents per view."""
 
     def __init__(self):
         super().__init__()
-        self.values, self.levels, self._open = {}, {}, []
+        self.values, self.full, self.levels, self.components, self._open = {}, {}, {}, [], []
+        self._view = None
 
     def handle_starttag(self, tag, attrs):
         attrs = dict(attrs)
+        if "data-straightened" in attrs:
+            self._view = attrs["data-straightened"]
         if "data-level" in attrs and "data-path-mm" in attrs:
             self.levels.setdefault(attrs["data-level"], []).append(float(attrs["data-path-mm"]))
+        if "data-component" in attrs:
+            self.components.append((self._view, attrs["data-component"], float(attrs["data-from-mm"]),
+                                    float(attrs["data-to-mm"])))
+        if "data-name" in attrs and "data-value" in attrs:
+            self.full.setdefault(attrs["data-name"], []).append(attrs["data-value"])
         self._open.append(attrs.get("data-name"))
 
     def handle_endtag(self, tag):
@@ -122,6 +131,72 @@ class DataNames(html.parser.HTMLParser):
     def handle_data(self, data):
         if self._open and self._open[-1]:
             self.values.setdefault(self._open[-1], []).append(data.strip())
+
+
+def decode_png(data_uri, path):
+    """The RGB pixels (rows from the top) of a PNG data URI, through VTK's reader."""
+    import base64
+    with open(path, "wb") as handle:
+        handle.write(base64.b64decode(data_uri.split(",", 1)[1]))
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    w, h, _ = image.GetDimensions()
+    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[::-1]
+
+
+def check_order_and_graft(ok, dom, names, returned, deployment, workdir):
+    """Issues 29 and 30 in the page: the order list first, the simulated graft drawn."""
+    order, devices = dom.find('id="order"'), dom.find("<h2>Devices</h2>")
+    ok(0 < order < devices, "the order list comes before the IFU tables", f"at {order}, devices at {devices}")
+    shown = names.values.get("orderList", [])
+    ok(shown and shown[0] == returned["orderList"] and " × " in shown[0],
+       "the page's order list is the returned orderList (each component as diameter × length)", f"{shown}")
+    full, texts = names.full.get("mainBodyLength", []), names.values.get("mainBodyLength", [])
+    ok(full and full[0] == returned["mainBodyLength"] and texts and texts[0] == f"{float(full[0]):.1f} mm",
+       "the main body's length is shown at 0.1 mm beside its return value", f"{texts} {full}")
+    for name in ("proximalSealLength", "proximalOversizing"):
+        texts, full = names.values.get(name, []), names.full.get(name, [])
+        unit, decimals = (" mm", 1) if name.endswith("Length") else (" %", 0)
+        ok(texts and full and texts[0] == f"{float(full[0]):.{decimals}f}{unit}",
+           f"the fit check shows {name} at clinical precision, not its variable name", f"{texts} {full}")
+    ok("proximalSealLength 3" not in dom and "proximalSealLength</td>" not in dom,
+       "the fit check's rows are words, not variable names")
+    # The 3-D views: two, not blank, showing the graft's colours (main body blue, limbs green and
+    # orange; shaded, so compared by hue).
+    uris = re.findall(r'class="graft-view"[^>]*src="(data:image/png;base64,[^"]*)"', dom)
+    ok(len(uris) == 2, f"the page has the graft's two 3-D views ({len(uris)})")
+    for k, uri in enumerate(uris):
+        rgb = decode_png(uri, os.path.join(workdir, f"graft-view-{k}.png"))[..., :3].astype(int)
+        r, g, b = rgb[..., 0], rgb[..., 1], rgb[..., 2]
+        blue = np.count_nonzero((b > 1.6 * r) & (b > 1.3 * g) & (b > 80))
+        orange = np.count_nonzero((r > 1.3 * g) & (g > 1.5 * b) & (r > 120))
+        ok(not blank(rgb) and blue > 500 and orange > 200,
+           f"3-D view {k}: not blank, the main body's blue ({blue} px) and the contralateral limb's orange "
+           f"({orange} px) show", f"{rgb.shape}")
+    # The straightened views draw the simulated components: the main body from the deployment
+    # target, and every component as long as the catalogue says (the graft neither slides nor
+    # shortens), within 1 mm — the issue's bar.
+    target = deployment["anatomy"]["deploymentTargetAbscissaMm"] if deployment else None
+    for view in ("right", "left"):
+        drawn = [c for c in names.components if c[0] == view]
+        body = [c for c in drawn if c[1] == "main body"]
+        ok(body and target is not None and abs(body[0][2] - target) <= 1.0,
+           f"{view} view: the main body is drawn from the deployment target ({target})", f"{body}")
+        ok(len(drawn) >= 2, f"{view} view: the main body and the limb(s) on this side are drawn", f"{drawn}")
+    lengths = {}
+    for component in deployment["components"] if deployment else []:
+        side = "right" if component["vessel"] in ("rightIliac",) else "left" if component["vessel"] == "leftIliac" else None
+        if component["role"] in ("ipsilateralLimb", "contralateralLimb"):
+            lengths[(side, component["role"].replace("Limb", " limb").replace("ipsilateral", "ipsilateral")
+                     .replace("contralateral", "contralateral"))] = component["lengthMm"]
+    for (side, role), length in lengths.items():
+        drawn = [c for c in names.components if c[0] == side and c[1] == role]
+        ok(drawn and abs((drawn[0][3] - drawn[0][2]) - length) <= 1.0,
+           f"{side} view: the {role} is drawn {length} mm long as simulated", f"{drawn}")
 
 
 def main():
@@ -167,12 +242,15 @@ def check_case(args, workdir, profile, case, phantom_args, screenshot_out):
     seed = sem_rules.read_return_parameters(params)["seedRas"]
     report, ret = os.path.join(workdir, "report.html"), os.path.join(workdir, "ret.params")
     right, left = os.path.join(workdir, "straight-right.nrrd"), os.path.join(workdir, "straight-left.nrrd")
+    plan_json = os.path.join(workdir, "report.json")
     result = run([args.cli, "--returnparameterfile", ret, "--seed", seed, "--outputReportHtml", report,
-                  "--outputStraightenedVolume", right, "--outputStraightenedLeftVolume", left, volume], workdir)
+                  "--outputReport", plan_json, "--outputStraightenedVolume", right,
+                  "--outputStraightenedLeftVolume", left, volume], workdir)
     if not ok(result.returncode == 0 and os.path.exists(report), "the CLI writes the report (exit 0)",
                  f"exit {result.returncode}; {result.stderr.strip()[:600]}"):
         return
     returned = sem_rules.read_return_parameters(ret)
+    deployment = json.load(open(plan_json)).get("deployment")
     text = open(report, encoding="utf-8").read()
 
     size = os.path.getsize(report)
@@ -219,14 +297,22 @@ def check_case(args, workdir, profile, case, phantom_args, screenshot_out):
 
     names = DataNames()
     names.feed(dom.stdout)
-    for name in ["recommendedDevice"] + LEVELS:
-        shown = names.values.get(name, [])
-        ok(shown and all(v == returned[name] for v in shown),
-              f"the DOM shows {name} = {returned[name]} as the return-parameter file has it", f"shown {shown}")
+    shown = names.values.get("recommendedDevice", [])
+    ok(shown and all(v == returned["recommendedDevice"] for v in shown),
+       f"the DOM shows recommendedDevice = {returned['recommendedDevice']} as the return file has it", f"{shown}")
+    # What a person reads (issue 30): at clinical precision, 0.1 mm, "not measured" for -1; the
+    # return file's full-precision text rides along in data-value.
+    for name in LEVELS:
+        full, texts = names.full.get(name, []), names.values.get(name, [])
+        expected = "not measured" if returned[name] == "-1" else f"{float(returned[name]):.1f} mm"
+        ok(full and all(v == returned[name] for v in full) and texts and all(t == expected for t in texts),
+           f"the DOM shows {name} as {expected!r}, with {returned[name]} as the return file has it",
+           f"shown {texts}, data-value {full}")
     ok(returned["recommendedDevice"] in dom.stdout, "the recommendation is in the DOM text")
     if case == "wall-in-fat":
         ok(returned["recommendedDevice"] != "none" and all(float(returned[n]) > 0 for n in LEVELS),
               "wall in fat: a device is recommended and every (a)-(f) is measured (the comparison compares numbers)")
+        check_order_and_graft(ok, dom.stdout, names, returned, deployment, workdir)
 
     # The straightened volume: geometry, and the lumen's width at (b)'s mark against the truth.
     data, header = sem_rules.read_nrrd(right)

@@ -139,9 +139,10 @@ TEST_F(YPhantomFit, SimulateModeBelowTheVesselRadius_StopsAtR)
   {
     // Never beyond R, nor touching the wall — except at the junction, where the 16 mm trunk
     // tapers into the 8 mm legs through the connection element and the legs meet at the crotch;
-    // that pull of the wider trunk fades within three rings (12 mm).
+    // that pull of the wider trunk fades within four rings (16 mm): each ring held in its plane
+    // cannot relieve it by sliding along the vessel (0.05 mm over R at the fourth leg ring).
     const bool junction = (mesh->segment[i] == TrunkSegment && mesh->ring[i] >= mesh->RingsIn(0) - 3) ||
-                          (mesh->segment[i] != TrunkSegment && mesh->ring[i] < 3);
+                          (mesh->segment[i] != TrunkSegment && mesh->ring[i] < 4);
     if (!junction)
     {
       ASSERT_LE(r.radiusMm[i], radius[mesh->segment[i]] + 1e-6);
@@ -150,8 +151,8 @@ TEST_F(YPhantomFit, SimulateModeBelowTheVesselRadius_StopsAtR)
   }
   // The ring's own stiffness holds it a little inside R: within 0.3 mm here.
   EXPECT_NEAR(MeanRadius(*mesh, r, TrunkSegment, 1, 3), 8.0, 0.3);
-  EXPECT_NEAR(MeanRadius(*mesh, r, RightLegSegment, 3, 1), 4.0, 0.3);
-  EXPECT_NEAR(MeanRadius(*mesh, r, LeftLegSegment, 3, 1), 4.0, 0.3);
+  EXPECT_NEAR(MeanRadius(*mesh, r, RightLegSegment, 4, 1), 4.0, 0.3);
+  EXPECT_NEAR(MeanRadius(*mesh, r, LeftLegSegment, 4, 1), 4.0, 0.3);
   // The energy of the run never increases: a semi-implicit gradient step on a smooth energy.
   for (std::size_t i = 1; i < r.energy.size(); ++i)
     ASSERT_LE(r.energy[i], r.energy[i - 1] + 1e-12 * std::abs(r.energy.front())) << "step " << i;
@@ -314,36 +315,24 @@ TEST_F(YPhantomFit, MeasureModeAfterContact_SurfaceRestsJustPastTheWall)
   }
 }
 
-// The ring-plane spring k_a. Simulate mode below the vessel radius: the stent touches no wall, so
-// nothing but the spring holds it along the vessel while the stiff weights' membrane term shortens
-// every s-chain. With the spring the run settles within a few hundred steps, each segment's middle
-// ring near its plane; without it the surface creeps along the vessel for thousands of steps.
-TEST_F(YPhantomFit, SimulateModeWithTheRingPlaneSpring_StaysWhereItWasPlaced)
+// The ring planes held (issue 30: the graft slid 6–10 mm and its legs ended 8.6 mm short under
+// a weak axial spring). In both modes and with stiff simulate-mode weights, every vertex ends in
+// its ring's plane (to rounding), so every ring keeps the abscissa it was placed at: the surface
+// starts where it was put and is as long as it was built. A stent below the vessel radius touches
+// no wall, so only the constraint holds it against the membrane term w1 that shortens s-chains.
+TEST_F(YPhantomFit, BothModes_EveryVertexStaysInItsRingPlane)
 {
-  auto params = ActiveContourParams::Simulate({ 16.0, 8.0, 8.0 });
-  const ActiveContourResult held = FitActiveContour(*mesh, *wall, params);
-  params.ringPlaneWeight = 0.0;
-  const ActiveContourResult loose = FitActiveContour(*mesh, *wall, params);
-  EXPECT_TRUE(held.converged);
-  EXPECT_FALSE(loose.converged);  // still creeping after the default 3000 steps
-  const double ringSpacing = 4.0; // StentMeshParams' default
-  for (int segment = 0; segment < 3; ++segment)
+  const ActiveContourResult simulated =
+    FitActiveContour(*mesh, *wall, ActiveContourParams::Simulate({ 16.0, 8.0, 8.0 }));
+  EXPECT_TRUE(simulated.converged);
+  for (const ActiveContourResult* r : { static_cast<const ActiveContourResult*>(measure), &simulated })
   {
-    const int k = mesh->RingsIn(segment) / 2;
-    double heldOff = 0.0, looseOff = 0.0;
-    for (int j = 0; j < mesh->verticesPerRing; ++j)
-    {
-      const int i = mesh->Id(segment, k, j);
-      heldOff = std::max(heldOff, std::abs(AxialOffset(*mesh, i, held.V.row(i).transpose())));
-      looseOff = std::max(looseOff, std::abs(AxialOffset(*mesh, i, loose.V.row(i).transpose())));
-    }
-    // Half a ring spacing: the middle ring stays nearer its own place than its neighbours'.
-    EXPECT_LT(heldOff, 0.5 * ringSpacing) << "segment " << segment;
-    // Several ring spacings: without the spring the rings have crept past their neighbours' places.
-    EXPECT_GT(looseOff, 3.0 * ringSpacing) << "segment " << segment;
+    // 1e-9 mm: V = C + U q is in the plane by construction; only rounding moves it off.
+    EXPECT_LT(r->maxAxialOffsetMm, 1e-9);
+    for (Eigen::Index i = 0; i < mesh->V.rows(); ++i)
+      ASSERT_LT(std::abs(AxialOffset(*mesh, i, r->V.row(i).transpose())), 1e-9) << "vertex " << i;
   }
 }
-
 // The crotch mid-plane as a wall for each leg's medial side (StentMesh::crotchPoint, crotchNormal).
 // The two leg rings nearest the crotch lie where the two iliac lumens overlap: without the plane
 // their medial vertices would cross into the other leg's lumen. With it they stop at the plane (the

@@ -71,7 +71,7 @@ TEST(DeviceCatalog, EachBrokenRule_InputErrorNamesOriginEntryFieldAndValue)
       { "families[1] \"tenmm\"", "repeats families[0]", "rename one" } },
     { [](DeviceCatalog& c) { c.families[1].source.clear(); }, { "families[1] \"FifteenMm\"", "'source'" } },
     { [](DeviceCatalog& c) { c.families.clear(); }, { "'families'", "is empty", "add one" } },
-    { [](DeviceCatalog& c) { c.formatVersion = 2; }, { "'formatVersion'", "is 2; expected 1", "convert the file" } },
+    { [](DeviceCatalog& c) { c.formatVersion = 1; }, { "'formatVersion'", "is 1; expected 2", "convert the file" } },
   };
   for (size_t i = 0; i < cases.size(); ++i)
   {

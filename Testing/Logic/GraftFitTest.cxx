@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "Common/Errors.h"
+#include "Device/DeployGraft.h"
 #include "Device/FitCheck.h"
 #include "Device/SelectDevice.h"
 #include "IO/ReadDeviceCatalog.h"
@@ -31,13 +32,17 @@ const CriterionCheck& Check(const FamilyEvaluation& family, const std::string& n
   throw std::runtime_error("no check " + name + " for " + family.family);
 }
 
-/// The simulate-mode fit of `plan`'s mesh with nominal diameters (trunk, right, left) and its check.
+/// The simulate-mode fit of `plan`'s mesh with nominal diameters (trunk, right, left; NaN: a leg not
+/// sized, carried at 12 mm) and its check: the chosen diameters on the measured landing zones
+/// (LayOutOnMeasureMesh), as the pipeline simulates a family whose lengths are not configured.
 FitCheck Simulate(const MeasuredPlan& plan, const std::array<double, 3>& diameters)
 {
-  const ActiveContourResult graft = FitActiveContour(plan.mesh, plan.wall, ActiveContourParams::Simulate(diameters));
-  EXPECT_TRUE(graft.converged);
-  return CheckGraftFit(plan.mesh, graft.V, graft.wallDistanceMm, plan.measurements, plan.tree, diameters,
-                       FitCheckParams{}, &plan.vesselWall);
+  const GraftLayout layout = LayOutOnMeasureMesh(plan.mesh, plan.measurements, "Test", diameters, { 12.0, 12.0 });
+  const DeployedGraft graft = DeployGraft(layout, plan.wall, ActiveContourParams::Simulate({ 24.0, 14.0, 14.0 }));
+  EXPECT_TRUE(graft.fit.converged);
+  FitCheckContext context;
+  context.limbSized = { std::isfinite(diameters[1]), std::isfinite(diameters[2]) };
+  return CheckGraftFit(graft, plan.measurements, plan.tree, &plan.vesselWall, context);
 }
 
 /// Mean of a per-vertex value over the trunk's first `rings` rings (the proximal neck).
@@ -236,10 +241,7 @@ TEST_F(DefaultPhantomGraft, LimbsNotSized_TheProximalPartChecked)
   for (const double mainBody : { 25.0, 18.0 })
   {
     SCOPED_TRACE(mainBody);
-    const ActiveContourResult graft =
-      FitActiveContour(plan->mesh, plan->wall, ActiveContourParams::Simulate({ mainBody, 12.0, 12.0 }));
-    const FitCheck c = CheckGraftFit(plan->mesh, graft.V, graft.wallDistanceMm, plan->measurements, plan->tree,
-                                     { mainBody, none, none }, FitCheckParams{}, &plan->vesselWall);
+    const FitCheck c = Simulate(*plan, { mainBody, none, none });
     const FitCheck full = mainBody == 25.0 ? whole : Simulate(*plan, { mainBody, 14.0, 14.0 });
     EXPECT_FALSE(c.Complete());
     EXPECT_FALSE(c.Passed()); // a partial check cannot pass
@@ -267,13 +269,15 @@ TEST_F(DefaultPhantomGraft, LimbsNotSized_TheProximalPartChecked)
 
 TEST_F(DefaultPhantomGraft, MismatchedMeasurements_InputError)
 {
-  MeasuredPlan other = *plan;
+  // A fitted surface of another mesh than the layout's.
+  DeployedGraft graft;
+  graft.layout = LayOutOnMeasureMesh(plan->mesh, plan->measurements, "Test", { 25.0, 14.0, 14.0 }, { 12.0, 12.0 });
   StentMeshParams meshParams;
-  meshParams.ringSpacingMm = 2.0; // another mesh: its rings are not the measured ones
-  other.mesh = BuildStentMesh(plan->tree, meshParams);
-  EXPECT_THROW(CheckGraftFit(other.mesh, other.mesh.V, Eigen::VectorXd::Zero(other.mesh.V.rows()), plan->measurements,
-                             plan->tree, { 25.0, 14.0, 14.0 }),
-               InputError);
+  meshParams.ringSpacingMm = 2.0;
+  const StentMesh other = BuildStentMesh(plan->tree, meshParams);
+  graft.fit.V = other.V;
+  graft.fit.wallDistanceMm = Eigen::VectorXd::Zero(other.V.rows());
+  EXPECT_THROW(CheckGraftFit(graft, plan->measurements, plan->tree, &plan->vesselWall, FitCheckContext{}), InputError);
 }
 
 } // namespace

@@ -369,7 +369,8 @@ TEST(SelectDevice, NeckDiameterNotMeasured_NothingToImplantSoNoRecommendation)
   a.proximalNeckDiameterMm = NaN;
   const DeviceSelection s = SelectDevice(a, MakeTestCatalog());
   EXPECT_LT(s.recommended, 0) << s.summary;
-  EXPECT_EQ(s.summary, "no device within IFU");
+  EXPECT_EQ(s.summary, "no device sized"); // not "no device within IFU": nothing failed
+  EXPECT_EQ(s.ifuStatus, CheckStatus::Indeterminate);
   ASSERT_FALSE(s.reasons.empty());
   EXPECT_NE(s.reasons[0].find("no main body sized"), std::string::npos) << s.reasons[0];
   // Sized on the lumen instead (a catalogue that says so), the same anatomy has its device.
@@ -381,6 +382,40 @@ TEST(SelectDevice, NeckDiameterNotMeasured_NothingToImplantSoNoRecommendation)
   a.rightIliacLumenDiameterMm = a.rightIliacDiameterMm;
   a.leftIliacLumenDiameterMm = a.leftIliacDiameterMm;
   EXPECT_GE(SelectDevice(a, lumen).recommended, 0);
+}
+
+TEST(SelectDevice, OuterWallNotTracedButLumenMeasured_SizedOnTheLumenAsAnEstimateAndIndeterminate)
+{
+  // Issue 29 item 4: no fat around the vessel, so no outer wall; the lumen was measured.
+  SizingAnatomy a = MakeGoodAnatomy();
+  a.proximalNeckLumenDiameterMm = 20.0;
+  a.neckLumenDiameter15mmMm = 20.5;
+  a.rightIliacLumenDiameterMm = 11.0;
+  a.leftIliacLumenDiameterMm = 11.0;
+  a.proximalNeckDiameterMm = a.neckDiameter15mmMm = a.rightIliacDiameterMm = a.leftIliacDiameterMm = NaN;
+  const DeviceSelection s = SelectDevice(a, MakeTestCatalog());
+  ASSERT_GE(s.recommended, 0) << s.summary; // a recommendation, not "no device within IFU"
+  const FamilyEvaluation& e = s.families[std::size_t(s.recommended)];
+  EXPECT_EQ(e.estimatedFromLumen, (std::vector<std::string>{ "(a)", "(b)", "(e)", "(f)" }));
+  // Sized on the lumen's 20 mm: TenMm's 23 mm body (15.0 %).
+  EXPECT_EQ(e.family, "TenMm");
+  EXPECT_EQ(e.mainBody.diameterMm, 23.0);
+  EXPECT_EQ(s.ifuStatus, CheckStatus::Indeterminate);
+  EXPECT_FALSE(s.recommendedFullyChecked);
+  EXPECT_NE(s.summary.find("estimated (lumen)"), std::string::npos) << s.summary;
+  for (const char* name : { "main body oversizing", "neck diameter", "neck diameter 15 mm below",
+                            "right iliac diameter", "left limb oversizing" })
+  {
+    const CriterionCheck& c = Check(e, name);
+    EXPECT_EQ(c.status, CheckStatus::Indeterminate) << name;
+    EXPECT_NE(c.text.find("estimated (lumen)"), std::string::npos) << c.text;
+  }
+  // A failing criterion on a measured value still fails the IFU: a 5 mm neck.
+  a.proximalNeckLengthMm = 5.0;
+  const DeviceSelection failing = SelectDevice(a, MakeTestCatalog());
+  EXPECT_LT(failing.recommended, 0);
+  EXPECT_EQ(failing.ifuStatus, CheckStatus::Fail);
+  EXPECT_EQ(failing.summary, "no device within IFU");
 }
 
 TEST(SelectDevice, ForcedFamilyAndSize_OnlyItEvaluatedAndFlaggedOutsideIfu)

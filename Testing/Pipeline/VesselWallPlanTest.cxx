@@ -3,6 +3,7 @@
 // leak into the neighbours that touch the vessel without a fat plane, outer = lumen + 2 × wall
 // where there is no thrombus, sizing on the wall the IFU names, and the hostile-neck verdict.
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <ostream>
 #include <string>
@@ -332,25 +333,64 @@ TEST(VesselWall, CalcifiedNeck_HostileByItsRuleOnly)
     }
 }
 
-TEST(VesselWall, NoFatAroundTheVessel_OuterValuesNotMeasuredAndSaid)
+class NoFatAroundTheVessel : public ::testing::TestWithParam<double>
 {
-  // The lumen-only phantom (40 HU tissue everywhere): no outer wall can be seen, so none is made
-  // up — the outer values are not measured, sizing on them is indeterminate, and a warning says so.
-  const AorticPhantom phantom = GenerateAorticPhantom(PhantomParams{});
+};
+
+TEST_P(NoFatAroundTheVessel, OuterValuesNotMeasured_DeviceSizedOnTheLumenAsAnEstimate)
+{
+  // Soft tissue (40 HU) all round, with no wall (the lumen-only phantom) or a 1.5 mm wall: no
+  // outer wall can be seen, so none is made up — the outer values are not measured, and a warning
+  // says so. Issue 29 item 4: the device is sized on the lumen, labelled estimated (lumen), and
+  // the IFU result is indeterminate — never "no device within IFU" from values not measured.
+  PhantomParams p;
+  p.wallThicknessMm = GetParam();
+  // 14 mm iliacs: external iliacs of 10.5 mm, whose lumen passes every family's access check, so
+  // that nothing fails on a measured value.
+  p.rightIliacDiameterMm = p.leftIliacDiameterMm = 14.0;
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
   const RepairPlan plan = PlanRepair(phantom.ct, phantom.truth.seedLps, PlanRequest{}, DefaultParams());
   EXPECT_TRUE(plan.vesselWall.Empty());
   EXPECT_TRUE(std::isnan(plan.measurements.Value("proximalNeckDiameter")));
   EXPECT_TRUE(std::isfinite(plan.measurements.Value("proximalNeckLumenDiameter")));
-  EXPECT_TRUE(std::any_of(plan.warnings.begin(), plan.warnings.end(),
-                          [](const std::string& w) { return w.find("No outer wall was found") != std::string::npos; }));
-  EXPECT_LT(plan.selection.recommended, 0) << plan.selection.summary; // nothing can be sized
-  EXPECT_FALSE(plan.HasGraft());
+  const auto warned = [&](const std::string& part)
+  {
+    return std::any_of(plan.warnings.begin(), plan.warnings.end(),
+                       [&](const std::string& w) { return w.find(part) != std::string::npos; });
+  };
+  EXPECT_TRUE(warned("No outer wall was found"));
+  EXPECT_TRUE(warned("The outer wall was not traced at (a), (b), (e), (f): the device is sized on the lumen"));
+  ASSERT_GE(plan.selection.recommended, 0) << plan.selection.summary;
+  EXPECT_NE(plan.selection.summary.find("estimated (lumen)"), std::string::npos) << plan.selection.summary;
+  EXPECT_EQ(plan.selection.summary.find("no device within IFU"), std::string::npos);
+  EXPECT_EQ(plan.selection.ifuStatus, CheckStatus::Indeterminate);
+  const FamilyEvaluation& family = plan.selection.families[std::size_t(plan.selection.recommended)];
+  EXPECT_TRUE(family.EstimatedOnLumen());
+  // Sized on the lumen's (a): the main body's oversizing is over the lumen.
+  EXPECT_NEAR(family.mainBody.oversizingPercent,
+              OversizingPercent(family.mainBody.diameterMm, plan.measurements.Value("proximalNeckLumenDiameter")),
+              1e-9);
+  std::map<std::string, PlanValue> values;
   for (const PlanValue& v : PlanReturnValues(plan))
-    if (v.name == "proximalNeckDiameter" || v.name == "thrombusVolume" || v.name == "recommendedDevice")
+    values[v.name] = v;
+  EXPECT_EQ(values["ifuStatus"].text, "indeterminate");
+  EXPECT_EQ(values["withinIfu"].text, "false");
+  EXPECT_NE(values["recommendedDevice"].text, "none");
+  EXPECT_FALSE(values["proximalNeckDiameter"].measured);
+  EXPECT_FALSE(values["thrombusVolume"].measured);
+  // Every row the estimate feeds says so.
+  for (const Measurement& row : plan.rows)
+    if (row.name == "mainBodyDiameter" || row.name == "rightLimbDiameter" || row.name == "leftLimbDiameter" ||
+        row.name == "mainBodyLength")
     {
-      EXPECT_EQ(v.measured, v.name == "recommendedDevice") << v.name;
+      EXPECT_NE(row.definition.find("estimated (lumen)"), std::string::npos) << row.name << ": " << row.definition;
     }
 }
+
+INSTANTIATE_TEST_SUITE_P(VesselWall,
+                         NoFatAroundTheVessel,
+                         ::testing::Values(0.0, 1.5),
+                         [](const auto& info) { return info.param > 0.0 ? "WallInSoftTissue" : "LumenOnly"; });
 
 } // namespace
 } // namespace sgp

@@ -1,0 +1,109 @@
+#include "IO/DeploymentToJson.h"
+
+#include <cmath>
+
+namespace sgp
+{
+namespace
+{
+
+using Json = nlohmann::json;
+
+Json NumberOrNull(double value)
+{
+  return std::isfinite(value) ? Json(value) : Json(nullptr);
+}
+
+const char* SideName(int side)
+{
+  return side == 0 ? "right" : "left";
+}
+
+/// A component's vessel and its two ends' abscissae along that vessel's centerline.
+Json Placement(const RepairPlan& plan, double target, const ConfiguredComponent& c)
+{
+  const Measurements& m = plan.measurements;
+  const double toBifurcation = m.bifurcationAbscissaMm - target;
+  const bool inAorta = c.distalMm <= toBifurcation;
+  const double shift = inAorta ? target : -(toBifurcation + m.iliacStartBeyondBifurcationMm[std::size_t(c.side)]);
+  return { { "vessel", inAorta ? std::string("aorta") : std::string(SideName(c.side)) + "Iliac" },
+           { "proximalAbscissaMm", c.proximalMm + shift },
+           { "distalAbscissaMm", c.distalMm + shift },
+           { "fromTargetMm", { c.proximalMm, c.distalMm } } };
+}
+
+} // namespace
+
+nlohmann::json DeploymentToJson(const RepairPlan& plan)
+{
+  const DeviceConfiguration* c = plan.Configuration();
+  if (!c)
+    return nullptr;
+  const FamilyEvaluation& family = plan.selection.families[std::size_t(plan.orderedFamily)];
+  const double target = plan.deploymentTargetAbscissaMm;
+  Json components = Json::array();
+  for (const ConfiguredComponent& part : c->components)
+  {
+    Json json = { { "role", ToString(part.role) },
+                  { "name", part.item.name },
+                  { "catalogueCode", part.item.code.empty() ? Json(nullptr) : Json(part.item.code) },
+                  { "diameterMm", NumberOrNull(part.item.diameterMm) },
+                  { "distalDiameterMm", NumberOrNull(part.item.distalDiameterMm) },
+                  { "lengthMm", NumberOrNull(part.item.lengthMm) },
+                  { "evidence", part.item.evidence } };
+    json.update(Placement(plan, target, part));
+    components.push_back(json);
+  }
+  Json overlaps = Json::array();
+  for (const ComponentOverlap& o : c->overlaps)
+    overlaps.push_back({ { "junction", o.junction },
+                         { "side", SideName(o.side) },
+                         { "overlapMm", o.overlapMm },
+                         { "minMm", NumberOrNull(o.minMm) },
+                         { "maxMm", NumberOrNull(o.maxMm) } });
+  Json findings = Json::array();
+  for (const ConfigurationFinding& f : c->findings)
+    findings.push_back({ { "constraint", f.constraint },
+                         { "side", f.side < 0 ? Json(nullptr) : Json(SideName(f.side)) },
+                         { "text", f.text },
+                         { "option", f.option } });
+  Json alternatives = Json::array();
+  for (const SizeAlternative& a : c->alternatives)
+    alternatives.push_back(
+      { { "component", a.component }, { "chosen", a.chosen }, { "alternative", a.alternative }, { "text", a.text } });
+  Json zones = Json::object();
+  for (int side = 0; side < 2; ++side)
+    zones[SideName(side)] = { { "fromMm", c->configured ? Json(c->landingLowMm[std::size_t(side)]) : Json(nullptr) },
+                              { "toMm", c->configured ? Json(c->landingHighMm[std::size_t(side)]) : Json(nullptr) },
+                              { "sealMm", c->configured ? Json(c->sealLengthMm[std::size_t(side)]) : Json(nullptr) },
+                              { "marginToInternalIliacMm",
+                                c->configured ? Json(c->marginToInternalIliacMm[std::size_t(side)]) : Json(nullptr) } };
+  const double toBifurcation = plan.measurements.bifurcationAbscissaMm - target;
+  return {
+    { "family", c->family },
+    { "configured", c->configured },
+    { "unknownReason", c->configured ? Json(nullptr) : Json(c->unknownReason) },
+    { "estimated", family.EstimatedOnLumen() ? Json("lumen") : Json(nullptr) },
+    { "ipsilateralSide", SideName(c->ipsilateralSide) },
+    { "ipsilateralReason", c->ipsilateralReason },
+    { "orderList", c->OrderList() },
+    { "components", components },
+    { "overlaps", overlaps },
+    { "rightCoveredLengthMm", c->configured ? Json(c->coveredLengthMm[0]) : Json(nullptr) },
+    { "leftCoveredLengthMm", c->configured ? Json(c->coveredLengthMm[1]) : Json(nullptr) },
+    { "landingZones", zones },
+    { "gateEndMm", c->configured ? Json(c->gateEndMm) : Json(nullptr) },
+    { "gateClearanceMm", c->configured ? Json(c->gateClearanceMm) : Json(nullptr) },
+    { "flowDividerMm", c->configured ? Json(c->flowDividerMm) : Json(nullptr) },
+    { "anatomy",
+      { { "deploymentTargetAbscissaMm", target },
+        { "targetToBifurcationMm", NumberOrNull(toBifurcation) },
+        { "targetToRightInternalIliacMm", NumberOrNull(toBifurcation + plan.measurements.Value("rightIliacLength")) },
+        { "targetToLeftInternalIliacMm", NumberOrNull(toBifurcation + plan.measurements.Value("leftIliacLength")) } } },
+    { "findings", findings },
+    { "notes", c->notes },
+    { "alternatives", alternatives }
+  };
+}
+
+} // namespace sgp

@@ -1,0 +1,108 @@
+#include "Pipeline/OrderListText.h"
+
+#include <cmath>
+
+#include "Common/Format.h"
+#include "Common/Text.h"
+
+namespace sgp
+{
+namespace
+{
+
+const char* SideName(int side)
+{
+  return side == 0 ? "right" : "left";
+}
+
+std::string Mm(double value)
+{
+  return std::isfinite(value) ? FormatNumber(value) + " mm" : std::string("not measured");
+}
+
+std::string RoleWords(const ConfiguredComponent& c)
+{
+  switch (c.role)
+  {
+    case OrderRole::MainBody:
+      return "main body";
+    case OrderRole::IpsilateralLimb:
+      return std::string(SideName(c.side)) + " ipsilateral limb";
+    case OrderRole::ContralateralLimb:
+      return std::string(SideName(c.side)) + " contralateral limb";
+    case OrderRole::IliacExtension:
+      return std::string(SideName(c.side)) + " iliac extension";
+    case OrderRole::AorticCuff:
+      return "aortic cuff";
+  }
+  return "";
+}
+
+} // namespace
+
+std::string AnatomyLengthsText(const RepairPlan& plan)
+{
+  const Measurements& m = plan.measurements;
+  const double toBifurcation = m.Value("proximalSiteToBifurcationLength");
+  const double right = m.Value("rightIliacLength"), left = m.Value("leftIliacLength");
+  const auto total = [&](double iliac)
+  { return std::isfinite(toBifurcation + iliac) ? " (" + Mm(toBifurcation + iliac) + " from the lowest renal)" : ""; };
+  return "lowest renal → aortic bifurcation " + Mm(toBifurcation) + " → right internal iliac origin " + Mm(right) +
+         total(right) + ", left " + Mm(left) + total(left);
+}
+
+std::vector<std::string> OrderLines(const RepairPlan& plan)
+{
+  std::vector<std::string> lines;
+  const DeviceConfiguration* c = plan.Configuration();
+  if (!c)
+    return lines;
+  const FamilyEvaluation& family = plan.selection.families[std::size_t(plan.orderedFamily)];
+  const std::string estimated = family.EstimatedOnLumen()
+                                  ? " — estimated (lumen): sized on the lumen at " +
+                                      JoinWithCommas(family.estimatedFromLumen) + " where the outer wall was not traced"
+                                  : "";
+  if (!c->configured)
+  {
+    lines.push_back(c->family + ": the components' lengths are not configured — " + c->unknownReason + estimated + ".");
+    return lines;
+  }
+  lines.push_back(c->family + ", main body from the " + c->ipsilateralReason + estimated);
+  const double offset = plan.deploymentTargetAbscissaMm - plan.measurements.site.abscissaMm;
+  for (const ConfiguredComponent& part : c->components)
+  {
+    std::string where;
+    if (part.role == OrderRole::MainBody)
+      where =
+        "proximal edge " +
+        (std::abs(offset) < 0.05
+           ? std::string("at the lower edge of the lowest renal ostium")
+           : Mm(std::abs(offset)) + (offset > 0 ? " below" : " above") + " the lower edge of the lowest renal ostium") +
+        ", flow divider " + Mm(c->flowDividerMm) + " and contralateral gate end " + Mm(c->gateEndMm) + " below it (" +
+        Mm(c->gateClearanceMm) + " above the aortic bifurcation), ipsilateral leg to " + Mm(part.distalMm);
+    else
+      where = "from " + Mm(part.proximalMm) + " to " + Mm(part.distalMm) + " below the proximal edge";
+    lines.push_back("  " + RoleWords(part) + ": " + part.OrderText() + ", " + where);
+  }
+  for (const ComponentOverlap& o : c->overlaps)
+    lines.push_back("  overlap, " + o.junction + ": " + Mm(o.overlapMm) + " (needs " + FormatNumber(o.minMm) + "–" +
+                    FormatNumber(o.maxMm) + " mm)");
+  for (int side = 0; side < 2; ++side)
+  {
+    const double margin = c->marginToInternalIliacMm[side];
+    lines.push_back("  " + std::string(SideName(side)) + " side: covered " + Mm(c->coveredLengthMm[side]) +
+                    " from the proximal edge; planned seal in the common iliac " + Mm(c->sealLengthMm[side]) +
+                    ", distal edge " +
+                    (margin >= 0.0 ? Mm(margin) + " above the internal iliac ostium"
+                                   : Mm(-margin) + " past the internal iliac ostium (covers it)"));
+  }
+  for (const ConfigurationFinding& f : c->findings)
+    lines.push_back("  FINDING: " + f.text + ". Option: " + f.option + ".");
+  for (const std::string& note : c->notes)
+    lines.push_back("  Note: " + note);
+  for (const SizeAlternative& a : c->alternatives)
+    lines.push_back("  Alternative: " + a.text + ".");
+  return lines;
+}
+
+} // namespace sgp

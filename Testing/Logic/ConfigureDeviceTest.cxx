@@ -1,0 +1,409 @@
+// The modular configuration (issue 29): component lengths chosen from the shipped catalogue on
+// anatomies given as path lengths, checked against brute force over the catalogue and the
+// invariants the order list must keep (covered length = lengths − overlaps, overlaps in range,
+// distal edges above the internal iliac ostium and as low as the catalogue allows).
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "Device/ConfigureDevice.h"
+#include "Device/CriterionCheck.h"
+#include "IO/ReadDeviceCatalog.h"
+
+namespace sgp
+{
+namespace
+{
+
+/// Sums of catalogue figures are exact in double to far better than this, mm.
+constexpr double ExactMm = 1e-9;
+
+const DeviceCatalog& Shipped()
+{
+  static const DeviceCatalog catalog = ReadDeviceCatalog(SGP_DEVICES_JSON);
+  return catalog;
+}
+
+const DeviceFamily& Family(const std::string& name)
+{
+  const DeviceFamily* family = FindDeviceFamily(Shipped(), name);
+  if (!family)
+    throw std::runtime_error("no family " + name);
+  return *family;
+}
+
+/// A neck of 22 mm for 25 mm below the target, a 50 mm sac, a distal aorta of `distalAortaMm`
+/// over its last 20 mm; common iliacs of the given lengths and diameter, internal iliacs of
+/// radius 3 mm, 80 mm of external iliac beyond them.
+ConfigurationAnatomy Anatomy(double toBifurcationMm,
+                             double rightCommonIliacMm,
+                             double leftCommonIliacMm,
+                             double iliacDiameterMm = 14.0,
+                             double distalAortaMm = 22.0)
+{
+  ConfigurationAnatomy a;
+  a.targetToBifurcationMm = toBifurcationMm;
+  a.targetToInternalIliacMm = { toBifurcationMm + rightCommonIliacMm, toBifurcationMm + leftCommonIliacMm };
+  a.internalIliacRadiusMm = { 3.0, 3.0 };
+  a.targetToIliacEndMm = { a.targetToInternalIliacMm[0] + 80.0, a.targetToInternalIliacMm[1] + 80.0 };
+  a.iliacDiameterMm = { iliacDiameterMm, iliacDiameterMm };
+  for (double s = 0.0; s <= toBifurcationMm; s += 4.0)
+  {
+    a.aortaProfileMm.push_back(s);
+    a.aortaMinDiameterMm.push_back(s < 25.0 ? 22.0 : s > toBifurcationMm - 20.0 ? distalAortaMm : 50.0);
+  }
+  a.distalAorticDiameterMm = distalAortaMm;
+  a.distalAorticWall = "outer wall";
+  return a;
+}
+
+ChosenDiameters Chosen(double bodyMm, double limbMm)
+{
+  ChosenDiameters chosen;
+  chosen.mainBodyMm = bodyMm;
+  chosen.limbMm = { limbMm, limbMm };
+  return chosen;
+}
+
+const SideChoice Right{ 0, "right, as asked" };
+
+/// The largest gap between consecutive lengths of the limbs of diameter `distalMm`.
+double LengthStep(const DeviceFamily& family, double distalMm)
+{
+  std::vector<double> lengths;
+  for (const CatalogueComponent* limb : family.ComponentsOf(ComponentRole::Limb))
+    if (limb->distalDiameterMm == distalMm)
+      lengths.push_back(limb->lengthMm);
+  std::sort(lengths.begin(), lengths.end());
+  double step = 0.0;
+  for (std::size_t i = 1; i < lengths.size(); ++i)
+    step = std::max(step, lengths[i] - lengths[i - 1]);
+  return step;
+}
+
+/// Brute force: the highest distal edge ≤ `hi` that one limb of `distalMm` inserted into a stub
+/// [stubStart, stubEnd] can reach with an overlap within the family's window (−∞ when none).
+double BestSingleLimbEdge(const DeviceFamily& family, double stubStart, double stubEnd, double distalMm, double hi)
+{
+  const double lo = family.junctions.overlapMm.min;
+  const double top = std::isnan(family.junctions.overlapMm.max)
+                       ? stubEnd - stubStart
+                       : std::min(family.junctions.overlapMm.max, stubEnd - stubStart);
+  double best = -1e9;
+  for (const CatalogueComponent* limb : family.ComponentsOf(ComponentRole::Limb))
+    if (limb->distalDiameterMm == distalMm)
+      for (double ov = lo; ov <= top + 1e-9; ov += 0.01) // every 0.01 mm of the window
+      {
+        const double edge = stubEnd - ov + limb->lengthMm;
+        if (edge <= hi + 1e-6)
+          best = std::max(best, edge);
+      }
+  return best;
+}
+
+/// The invariants every configured plan keeps, on each side.
+void ExpectConsistent(const DeviceFamily& family, const DeviceConfiguration& c, const ConfigurationAnatomy& a)
+{
+  ASSERT_TRUE(c.configured) << c.unknownReason;
+  const ConfiguredComponent* body = c.Find(OrderRole::MainBody);
+  ASSERT_NE(body, nullptr);
+  EXPECT_EQ(body->proximalMm, 0.0);
+  for (const ComponentOverlap& o : c.overlaps)
+  {
+    SCOPED_TRACE(o.junction);
+    EXPECT_GE(o.overlapMm, o.minMm - ExactMm);
+    EXPECT_LE(o.overlapMm, o.maxMm + ExactMm);
+    // The limb's top lies inside what it is inserted into: the gate or leg below the flow divider.
+    const ConfiguredComponent& outer = c.components[std::size_t(o.outer)];
+    const ConfiguredComponent& inner = c.components[std::size_t(o.inner)];
+    const double outerEnd =
+      o.outer == 0 ? (o.side == c.ipsilateralSide ? body->distalMm : c.gateEndMm) : outer.distalMm;
+    EXPECT_NEAR(inner.proximalMm, outerEnd - o.overlapMm, ExactMm);
+    if (o.outer == 0)
+    {
+      EXPECT_GE(inner.proximalMm, c.flowDividerMm - ExactMm);
+    }
+  }
+  for (int side = 0; side < 2; ++side)
+  {
+    SCOPED_TRACE(side == 0 ? "right" : "left");
+    // Covered = the components' lengths on this side's path minus their overlaps, exactly.
+    double sum = side == c.ipsilateralSide ? body->item.lengthMm : c.gateEndMm;
+    double last = sum;
+    for (const ConfiguredComponent& part : c.components)
+      if (part.role != OrderRole::MainBody && part.side == side)
+      {
+        sum += part.item.lengthMm;
+        last = std::max(last, part.distalMm);
+      }
+    for (const ComponentOverlap& o : c.overlaps)
+      if (o.side == side)
+        sum -= o.overlapMm;
+    EXPECT_NEAR(c.coveredLengthMm[side], sum, ExactMm);
+    EXPECT_NEAR(c.coveredLengthMm[side], last, ExactMm);
+    EXPECT_NEAR(c.sealLengthMm[side], c.coveredLengthMm[side] - a.targetToBifurcationMm, ExactMm);
+    EXPECT_NEAR(c.marginToInternalIliacMm[side], c.landingHighMm[side] - c.coveredLengthMm[side], ExactMm);
+    EXPECT_NEAR(c.landingLowMm[side], a.targetToBifurcationMm + family.ifu.iliacSealLengthMm.min, ExactMm);
+  }
+}
+
+const ConfigurationFinding* FindFinding(const DeviceConfiguration& c, const std::string& constraint, int side = -2)
+{
+  for (const ConfigurationFinding& f : c.findings)
+    if (f.constraint == constraint && (side == -2 || f.side == side))
+      return &f;
+  return nullptr;
+}
+
+class CommonIliacAndAorta : public ::testing::TestWithParam<std::tuple<double, double>>
+{
+};
+
+// Common iliacs of 20, 35 and 55 mm, and aortas whose bifurcation lies 90, 120 and 160 mm below
+// the proximal edge: each limb's distal edge stays above the internal iliac ostium, lands at
+// least the family's minimum seal into the common iliac, is the highest edge any single limb of
+// the catalogue reaches there (brute force), and so lies within the family's length step of the
+// ostium; overlaps within range; covered lengths exactly the components' lengths minus overlaps.
+TEST_P(CommonIliacAndAorta, LimbsLandAboveTheInternalIliacAsLowAsTheCatalogueAllows)
+{
+  const auto [cia, toBifurcation] = GetParam();
+  for (const std::string& name : { std::string("Endurant II"), std::string("Excluder Conformable") })
+  {
+    SCOPED_TRACE(name);
+    const DeviceFamily& family = Family(name);
+    const double limb = 16.0; // both families offer 16 mm for a 14 mm iliac (14.3 %)
+    const double body = name == "Endurant II" ? 25.0 : 26.0;
+    const ConfigurationAnatomy a = Anatomy(toBifurcation, cia, cia);
+    const DeviceConfiguration c = ConfigureDevice(family, Chosen(body, limb), a, Right);
+    ExpectConsistent(family, c, a);
+    if (::testing::Test::HasFatalFailure())
+      return;
+    // Where the catalogue cannot reach (worked out by hand from its lengths): Endurant's shortest
+    // reach is 122 mm (74 − 34 + 82) on the contralateral side and 124 mm (the 124 mm body's
+    // leg) on the ipsilateral one, so a 90 mm aorta with a 20 or 35 mm common iliac (ostium at
+    // 107 or 122 mm) is covered; Conformable's shortest leg reaches 150 mm (85 − 30 + 95) and its
+    // gate needs 95 mm of aorta. Everywhere else both sides land without a finding.
+    const bool endurant = name == "Endurant II";
+    const bool lands =
+      endurant ? !(toBifurcation == 90.0 && cia <= 35.0) : toBifurcation >= 120.0 && toBifurcation + cia - 3.0 >= 150.0;
+    if (lands)
+    {
+      EXPECT_TRUE(c.findings.empty()) << c.findings.front().text;
+    }
+    else
+    {
+      ASSERT_FALSE(c.findings.empty());
+      EXPECT_NE(FindFinding(c, "internalIliacCovered"), nullptr);
+    }
+    for (const ConfigurationFinding& f : c.findings)
+    {
+      // Only a finding of the anatomy, never a silent one: a side that cannot land names it.
+      EXPECT_TRUE(f.constraint == "internalIliacCovered" || f.constraint == "gateBelowBifurcation") << f.text;
+      EXPECT_FALSE(f.option.empty());
+    }
+    for (int side = 0; side < 2; ++side)
+    {
+      SCOPED_TRACE(side == 0 ? "right" : "left");
+      const double hi = toBifurcation + cia - 3.0; // the ostium's upper edge: origin − r_IIA
+      EXPECT_NEAR(c.landingHighMm[side], hi, ExactMm);
+      const bool landed = std::none_of(c.findings.begin(), c.findings.end(),
+                                       [&](const ConfigurationFinding& f) { return f.side == side; });
+      if (!landed)
+        continue;
+      const double edge = c.coveredLengthMm[side];
+      EXPECT_LE(edge, hi + ExactMm) << "covers the internal iliac";
+      EXPECT_GE(edge, toBifurcation + family.ifu.iliacSealLengthMm.min - ExactMm) << "seal below the minimum";
+      // Within the length step of the ostium — unless the longest limb of this diameter was used
+      // and the catalogue has no extension of it: then nothing reaches lower.
+      const auto usesLongest = [&]
+      {
+        double longest = 0.0;
+        for (const CatalogueComponent* l : family.ComponentsOf(ComponentRole::Limb))
+          if (l->distalDiameterMm == limb)
+            longest = std::max(longest, l->lengthMm);
+        const auto extensions = family.ComponentsOf(ComponentRole::IliacExtension);
+        const ConfiguredComponent* used =
+          c.Find(side == c.ipsilateralSide ? OrderRole::IpsilateralLimb : OrderRole::ContralateralLimb, side);
+        return used && used->item.lengthMm == longest &&
+               std::none_of(extensions.begin(), extensions.end(),
+                            [&](const CatalogueComponent* e) { return e->distalDiameterMm == limb; });
+      };
+      if (edge < hi - LengthStep(family, limb) - ExactMm)
+      {
+        EXPECT_TRUE(usesLongest()) << "higher than the length step: " << edge << " for an ostium at " << hi;
+      }
+      const bool limbAlone = std::count_if(c.components.begin(), c.components.end(),
+                                           [&](const ConfiguredComponent& p)
+                                           { return p.side == side && p.role != OrderRole::MainBody; }) == 1;
+      if (side != c.ipsilateralSide && limbAlone)
+      {
+        EXPECT_NEAR(edge, BestSingleLimbEdge(family, c.flowDividerMm, c.gateEndMm, limb, hi), 0.011)
+          << "not the lowest edge the catalogue's limbs reach (brute force every 0.01 mm of overlap)";
+      }
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Configurations,
+                         CommonIliacAndAorta,
+                         ::testing::Combine(::testing::Values(20.0, 35.0, 55.0), ::testing::Values(90.0, 120.0, 160.0)),
+                         [](const auto& info)
+                         {
+                           return "Cia" + std::to_string(int(std::get<0>(info.param))) + "_Aorta" +
+                                  std::to_string(int(std::get<1>(info.param)));
+                         });
+
+TEST(ConfigureDevice, TwelveMillimetreCommonIliac_NamesTheShortSealAndTheExternalIliacOption)
+{
+  const DeviceFamily& family = Family("Endurant II");
+  const ConfigurationAnatomy a = Anatomy(120, 55, 12);
+  const DeviceConfiguration c = ConfigureDevice(family, Chosen(25, 16), a, Right);
+  ExpectConsistent(family, c, a);
+  const ConfigurationFinding* f = FindFinding(c, "commonIliacTooShort", 1);
+  ASSERT_NE(f, nullptr);
+  // 12 mm to the origin less the 3 mm ostium radius: 9.0 mm of common iliac for a 15 mm seal.
+  EXPECT_NE(f->text.find("9.0 mm from the aortic bifurcation"), std::string::npos) << f->text;
+  EXPECT_NE(f->text.find("needs ≥ 15 mm"), std::string::npos) << f->text;
+  EXPECT_NE(f->option.find("external iliac"), std::string::npos) << f->option;
+  EXPECT_NE(f->option.find("covers the internal iliac"), std::string::npos) << f->option;
+  // Never silently over the ostium: the limb still ends above it.
+  EXPECT_LE(c.coveredLengthMm[1], c.landingHighMm[1] + ExactMm);
+  EXPECT_FALSE(c.Feasible());
+}
+
+TEST(ConfigureDevice, TwentySixMillimetreCommonIliac_BellBottomLimbAndTheOption)
+{
+  const DeviceFamily& family = Family("Endurant II");
+  ChosenDiameters chosen = Chosen(25, 16);
+  chosen.limbMm[0] = std::numeric_limits<double>::quiet_NaN(); // the selection found no limb for 26 mm
+  ConfigurationAnatomy a = Anatomy(120, 55, 55);
+  a.iliacDiameterMm[0] = 26.0;
+  const DeviceConfiguration c = ConfigureDevice(family, chosen, a, Right);
+  ExpectConsistent(family, c, a);
+  const ConfigurationFinding* f = FindFinding(c, "iliacTooWide", 0);
+  ASSERT_NE(f, nullptr);
+  // 28 mm, the widest Endurant limb, gives 7.7 % over 26 mm.
+  EXPECT_NE(f->text.find("28 mm gives 7.7 %"), std::string::npos) << f->text;
+  EXPECT_NE(f->option.find("bell-bottom"), std::string::npos) << f->option;
+  EXPECT_NE(f->option.find("covers the internal iliac"), std::string::npos) << f->option;
+  const ConfiguredComponent* limb = c.Find(OrderRole::IpsilateralLimb, 0);
+  ASSERT_NE(limb, nullptr);
+  EXPECT_EQ(limb->item.distalDiameterMm, 28.0);
+  EXPECT_FALSE(c.Feasible());
+}
+
+TEST(ConfigureDevice, SixteenMillimetreDistalAortaWithTwoFourteenMillimetreLimbs_LimbCompression)
+{
+  // Excluder Conformable's 14.5 mm legs for 12 mm iliacs (20.8 %), both through a 16 mm aorta.
+  const DeviceFamily& family = Family("Excluder Conformable");
+  const ConfigurationAnatomy a = Anatomy(120, 40, 40, 12.0, 16.0);
+  const DeviceConfiguration c = ConfigureDevice(family, Chosen(26, 14.5), a, Right);
+  ExpectConsistent(family, c, a);
+  const ConfigurationFinding* f = FindFinding(c, "limbCompression");
+  ASSERT_NE(f, nullptr);
+  EXPECT_NE(f->text.find("16.0 mm"), std::string::npos) << f->text;
+  EXPECT_NE(f->text.find("29.0 mm"), std::string::npos) << f->text; // 14.5 + 14.5
+  EXPECT_FALSE(c.Feasible());
+  // A 19 mm distal aorta is narrow, not extremely: a note, not a failure.
+  const DeviceConfiguration narrow = ConfigureDevice(family, Chosen(26, 14.5), Anatomy(120, 40, 40, 12.0, 19.0), Right);
+  EXPECT_EQ(FindFinding(narrow, "limbCompression"), nullptr);
+  EXPECT_TRUE(std::any_of(narrow.notes.begin(), narrow.notes.end(),
+                          [](const std::string& n) { return n.find("Narrow distal aorta") != std::string::npos; }));
+}
+
+TEST(ConfigureDevice, CrotchWiderThanTheAortaAtTheFlowDivider_CrotchFinding)
+{
+  // Endurant's crotch is 27–30 mm wide: a sac-less aorta of 22 mm throughout is narrower.
+  const DeviceFamily& family = Family("Endurant II");
+  ConfigurationAnatomy a = Anatomy(120, 55, 55);
+  std::fill(a.aortaMinDiameterMm.begin(), a.aortaMinDiameterMm.end(), 22.0);
+  const DeviceConfiguration c = ConfigureDevice(family, Chosen(25, 16), a, Right);
+  const ConfigurationFinding* f = FindFinding(c, "crotchTooNarrow");
+  ASSERT_NE(f, nullptr);
+  EXPECT_NE(f->text.find("22.0 mm"), std::string::npos) << f->text;
+}
+
+TEST(ConfigureDevice, AortaShorterThanTheShortestGate_GateBelowTheBifurcation)
+{
+  // Endurant's shortest gate ends 74 mm below the edge; it needs 10 mm above the bifurcation.
+  const DeviceFamily& family = Family("Endurant II");
+  const DeviceConfiguration c = ConfigureDevice(family, Chosen(25, 16), Anatomy(80, 55, 55), Right);
+  const ConfigurationFinding* f = FindFinding(c, "gateBelowBifurcation");
+  ASSERT_NE(f, nullptr);
+  EXPECT_NE(f->text.find("6.0 mm above the aortic bifurcation"), std::string::npos) << f->text;
+  EXPECT_EQ(c.gateEndMm, 74.0); // the shortest gate was kept: the least failing body
+}
+
+TEST(ConfigureDevice, LengthsNotInTheCatalogue_NotConfiguredWithTheReason)
+{
+  const DeviceConfiguration zenith =
+    ConfigureDevice(Family("Zenith Flex"), Chosen(26, 14), Anatomy(120, 55, 55), Right);
+  EXPECT_FALSE(zenith.configured);
+  EXPECT_NE(zenith.unknownReason.find("no length, flow divider and contralateral gate position"), std::string::npos)
+    << zenith.unknownReason;
+  EXPECT_NE(zenith.OrderList().find("not configured"), std::string::npos);
+  ConfigurationAnatomy noOrigin = Anatomy(120, 55, 55);
+  noOrigin.targetToInternalIliacMm[1] = std::numeric_limits<double>::quiet_NaN();
+  const DeviceConfiguration c = ConfigureDevice(Family("Endurant II"), Chosen(25, 16), noOrigin, Right);
+  EXPECT_FALSE(c.configured);
+  EXPECT_NE(c.unknownReason.find("left internal iliac origin was not found"), std::string::npos) << c.unknownReason;
+}
+
+TEST(ConfigureDevice, AskedSide_MainBodyGoesUpThatSide)
+{
+  const DeviceFamily& family = Family("Endurant II");
+  for (int side : { 0, 1 })
+  {
+    const ConfigurationAnatomy a = Anatomy(120, 40, 55);
+    const DeviceConfiguration c = ConfigureDevice(family, Chosen(25, 16), a, { side, "as asked" });
+    ExpectConsistent(family, c, a);
+    EXPECT_EQ(c.ipsilateralSide, side);
+    EXPECT_EQ(c.Find(OrderRole::MainBody)->side, side);
+    EXPECT_NE(c.Find(OrderRole::ContralateralLimb, 1 - side), nullptr);
+  }
+}
+
+TEST(ChooseIpsilateralSide, WiderAccessThenLessTortuousThenRight)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(ChooseIpsilateralSide(IpsilateralSide::Auto, { 6.0, 8.0 }, { 1.0, 1.5 }).side, 1); // 2 mm wider left
+  EXPECT_EQ(ChooseIpsilateralSide(IpsilateralSide::Auto, { 7.5, 8.0 }, { 1.3, 1.1 }).side,
+            1); // within 1 mm: tortuosity
+  EXPECT_EQ(ChooseIpsilateralSide(IpsilateralSide::Auto, { 8.0, 7.5 }, { 1.1, 1.3 }).side, 0);
+  EXPECT_EQ(ChooseIpsilateralSide(IpsilateralSide::Auto, { 7.5, 8.0 }, { 1.10, 1.12 }).side, 1); // alike: wider
+  EXPECT_EQ(ChooseIpsilateralSide(IpsilateralSide::Auto, { nan, 8.0 }, { nan, nan }).side, 1);
+  EXPECT_EQ(ChooseIpsilateralSide(IpsilateralSide::Auto, { nan, nan }, { nan, nan }).side, 0);
+  EXPECT_EQ(ChooseIpsilateralSide(IpsilateralSide::Left, { 9.0, 6.0 }, { 1.0, 2.0 }).side, 1);
+  EXPECT_NE(ChooseIpsilateralSide(IpsilateralSide::Auto, { 7.5, 8.0 }, { 1.3, 1.1 }).reason.find("less tortuous"),
+            std::string::npos);
+}
+
+TEST(ConfigureDevice, InternalIliacOriginNearALengthBoundary_ListsTheOtherLength)
+{
+  // Brute force finds an anatomy whose left limb changes when its origin moves by ±3 mm.
+  const DeviceFamily& family = Family("Endurant II");
+  bool found = false;
+  for (double cia = 20.0; cia <= 60.0 && !found; cia += 0.5)
+  {
+    const DeviceConfiguration c = ConfigureDevice(family, Chosen(25, 16), Anatomy(120, 55, cia), Right);
+    const DeviceConfiguration lower = ConfigureDevice(family, Chosen(25, 16), Anatomy(120, 55, cia + 3.0), Right);
+    const ConfiguredComponent *mine = c.Find(OrderRole::ContralateralLimb, 1),
+                              *theirs = lower.Find(OrderRole::ContralateralLimb, 1);
+    if (!mine || !theirs || mine->item.lengthMm == theirs->item.lengthMm)
+      continue;
+    found = true;
+    const auto listed = std::find_if(c.alternatives.begin(), c.alternatives.end(),
+                                     [&](const SizeAlternative& a) { return a.component == "left limb"; });
+    ASSERT_NE(listed, c.alternatives.end()) << "cia " << cia;
+    EXPECT_EQ(listed->alternative, CompactNumber(theirs->item.lengthMm) + " mm");
+    EXPECT_NE(listed->text.find("uncertainty"), std::string::npos);
+  }
+  EXPECT_TRUE(found);
+}
+
+} // namespace
+} // namespace sgp
