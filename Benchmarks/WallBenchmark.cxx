@@ -5,6 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include "Centerlines/ProximalSite.h"
+#include "LargePhantom.h"
 #include "PipelineSupport.h"
 #include "Wall/VesselWall.h"
 
@@ -25,15 +26,7 @@ const Prepared& LargeWallPlan()
 {
   static const Prepared prepared = []
   {
-    sgp::PhantomParams p;
-    p.spacingMm = { 0.7, 0.7, 1.0 };
-    p.sizeVoxels = { 512, 512, 400 };
-    p.wallThicknessMm = 1.5;
-    p.thrombusMaxThicknessMm = 12.0;
-    p.sacCalcificationArcDeg = 90.0;
-    p.sacCalcificationSide = sgp::PhantomSide::Anterior;
-    p.tissueHu = -100.0;
-    Prepared r{ sgp::GenerateAorticPhantom(p), {}, {}, {} };
+    Prepared r{ sgp::GenerateAorticPhantom(sgp::benchmarks::LargeWallPhantomParams()), {}, {}, {} };
     r.lumen = sgp::GrowLumenRegion(*r.phantom.ct, r.phantom.truth.seedLps, sgp::RegionGrowingParams{});
     r.tree = sgp::testing::CenterlinesFromMask(*r.lumen.mask);
     r.site = sgp::FindProximalSite(r.tree);

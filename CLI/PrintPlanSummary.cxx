@@ -4,6 +4,7 @@
 
 #include "Common/Format.h"
 #include "Pipeline/OrderListText.h"
+#include "Pipeline/ValueText.h"
 
 namespace sgp
 {
@@ -92,13 +93,13 @@ void PrintPlanSummary(const RepairPlan& plan, const std::string& acmMode, std::o
   if (plan.Reached(PlanStage::Measurements))
   {
     const Measurements& m = plan.measurements;
-    out << "Proximal site (" << ToString(m.site.source) << ") at " << FormatNumber(m.site.abscissaMm)
-        << " mm along the aorta" << std::endl;
+    const char* siteFrom = m.site.source == ProximalSiteSource::Landmark ? "at the landmark given"
+                           : m.site.source == ProximalSiteSource::Renal  ? "below the lowest renal artery"
+                                                                         : "at the top of the scan";
+    out << "Measurements (proximal site " << siteFrom << ", " << FormatNumber(m.site.abscissaMm)
+        << " mm along the aorta):" << std::endl;
     for (const Measurement& v : m.values)
-      out << "  " << v.name << " = "
-          << (std::isfinite(v.value) ? FormatNumber(v.value, v.unit == "ratio" ? 3 : 1) + " " + v.unit
-                                     : std::string("not measured"))
-          << std::endl;
+      out << "  " << ValueLabel(v.name) << ": " << ClinicalText(v.value, v.unit) << std::endl;
   }
 }
 

@@ -1,8 +1,8 @@
 /// \file PrintPlanSummary.h
 /// What StentGraftSimulation prints after a successful run: the lumen and its window, the
-/// centerlines, the stent surface, the device and the simulated graft, the measurements — each
-/// only when the plan reached it; lengths and diameters with one decimal, like every number the
-/// user reads. And the warnings of the CLI edge ("WARNING: …", one line each, on stderr).
+/// centerlines, the stent surface, the device and the simulated graft, the measurements in words — each
+/// only when the plan reached it; every number at clinical precision (ValueText.h), like every
+/// number the user reads. And the warnings of the CLI edge ("WARNING: …", one line each, on stderr).
 #pragma once
 
 #include <ostream>

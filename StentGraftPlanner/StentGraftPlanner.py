@@ -3,9 +3,10 @@
 Place a seed in the aortic lumen, press Apply: the StentGraftSimulation CLI runs in the
 background (segmentation of the lumen and the outer wall, centerlines, fitted stent surface,
 measurements, device selection and the simulated graft), then its outputs are shown in the views
-(the lumen and, translucent around it, the outer wall as two segments), the results table (every
-value with its wall: outer wall or lumen) and the device recommendation in the panel, and the
-diameter profile in a plot.
+(the lumen and, translucent around it, the outer wall as two segments; the simulated graft coloured
+by component), the order list beside the anatomy's lengths it was chosen from, the device
+recommendation and the results table (every value with its wall: outer wall or lumen) in the panel,
+and the diameter profile in a plot.
 
 This file holds only what needs Slicer; the settings, the CLI parameter dictionary, the start and
 the following of a CLI run, the reading of the CLI's results and the colours are in
@@ -30,7 +31,7 @@ from slicer.ScriptedLoadableModule import (
 )
 from slicer.util import VTKObservationMixin
 
-from StentGraftPlannerLib import Appearance, CliRun, Results, Settings
+from StentGraftPlannerLib import Appearance, CliRun, OrderList, Results, Settings
 
 
 class StentGraftPlanner(ScriptedLoadableModule):
@@ -207,6 +208,7 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
     def onApplyButton(self):
         with slicer.util.tryWithErrorDisplay("Could not start the planning run.", waitCursor=True):
             self.updateParameterNodeFromGUI()
+            self.ui.orderListLabel.text = ""
             self.ui.recommendationLabel.text = ""
             self._run = self.logic.startPlanning(self._parameterNode, self.onRunFinished, self.onRunProgress)
             self.ui.progressBar.value = 0
@@ -240,19 +242,21 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
         self.ui.openReportButton.enabled = self._reportHtmlPath is not None
         self.ui.openReportButton.toolTip = self._reportHtmlPath or "The run wrote no visual report."
         self.ui.measurementsTableView.setMRMLTableNode(self._parameterNode.GetNodeReference("resultsTable"))
+        self.ui.orderListLabel.text = results.orderListHtml
         self.ui.recommendationLabel.text = results.recommendationHtml
         self.ui.resultsCollapsibleButton.collapsed = False
 
 
 class PlanningResults:
     """What a finished run returned: return values, the parsed report, the results table's rows and
-    the panel text."""
+    the panel text (the order list first, then the recommendation and the IFU details)."""
 
     def __init__(self, values, report, measurementRows):
         self.values = values
         self.report = report
         self.reportHtmlPath = None  # the visual report, when the run wrote one
         self.tableRows = Results.resultsTableRows(values, measurementRows)
+        self.orderListHtml = OrderList.orderListHtml(report, values)
         self.recommendationHtml = Results.recommendationHtml(report)
 
 
@@ -464,15 +468,31 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
             polyData = model.GetPolyData()
             if look.scalars and polyData is not None and polyData.GetPointData().GetArray(look.scalars):
                 display.SetActiveScalarName(look.scalars)
-                display.SetAndObserveColorNodeID("vtkMRMLColorTableNodeRainbow")
+                colorNodeId = ("vtkMRMLColorTableNodeRainbow" if look.colorTable is None
+                               else self.componentColorNode(parameterNode).GetID())
+                display.SetAndObserveColorNodeID(colorNodeId)
                 display.SetScalarRangeFlag(slicer.vtkMRMLDisplayNode.UseManualScalarRange)
-                display.SetScalarRange(*look.scalarRangeMm)
+                display.SetScalarRange(*look.scalarRange)
                 display.SetScalarVisibility(True)
         landmarks = parameterNode.GetNodeReference("outputLandmarks")
         landmarks.CreateDefaultDisplayNodes()
         landmarks.GetDisplayNode().SetSelectedColor(*Appearance.LOOKS["outputLandmarks"].color)
         landmarks.SetLocked(True)
         self.showStraightenedVolume(parameterNode)
+
+    def componentColorNode(self, parameterNode):
+        """The discrete colour table of the graft's components (Appearance.componentColorTable), one
+        entry per ComponentRole code, referenced as componentColors."""
+        table = self._referencedNode(parameterNode, "componentColors", "vtkMRMLColorTableNode",
+                                     Appearance.COMPONENT_COLOR_TABLE)
+        entries = Appearance.componentColorTable()
+        table.SetTypeToUser()
+        table.SetNumberOfColors(len(entries))
+        if not hasattr(table, "SetColorDefined"):  # before Slicer 5.4: keep SetColor's names (deprecated after)
+            table.SetNamesInitialised(True)
+        for index, name, rgba in entries:
+            table.SetColor(index, name, *rgba)
+        return table
 
     def placeAutomaticSeed(self, parameterNode, seedRas):
         """The seed the CLI found (no seed was placed) as the seed point list's one point, which the
@@ -652,6 +672,15 @@ class StentGraftPlannerTest(ScriptedLoadableModuleTest):
         for row, item in enumerate(Results.RETURN_VALUES):
             if item.wall:  # the diameters; the neck length and conicity carry the wall they were measured on
                 self.assertEqual(table.GetValue(row, 2).ToString(), Results.WALL_TEXT[item.wall], item.name)
+        # Issues 29 and 30: the order list comes back first, and the graft is coloured by component.
+        self.assertIn(results.values["ipsilateralSideUsed"], ("right", "left"))
+        self.assertTrue(results.orderListHtml.startswith("<table>"), results.orderListHtml[:80])
+        self.assertIn("<b>Order list: ", results.orderListHtml)
+        display = parameterNode.GetNodeReference("outputSimulatedStentModel").GetDisplayNode()
+        self.assertEqual(display.GetActiveScalarName(), "ComponentRole")
+        self.assertTrue(display.GetScalarVisibility())
+        self.assertEqual(display.GetColorNode().GetNumberOfColors(), len(Appearance.COMPONENT_ROLES))
+        self.assertEqual(tuple(display.GetScalarRange()), Appearance.LOOKS["outputSimulatedStentModel"].scalarRange)
         chart = parameterNode.GetNodeReference("profileChart")
         self.assertEqual(chart.GetNumberOfPlotSeriesNodes(), 3)
         self.assertEqual(self._cliNodeCount(), 0)  # the temporary CLI node was removed

@@ -17,6 +17,7 @@ SGP_PACKAGES=(
   libgdcm-tools
   chromium # the visual report is checked in a real browser (Testing/CLI/test_report_html.py)
   snakemake slurm-wlm munge # the cohort workflow (workflows/cohort) and its local and Slurm tests (Testing/Workflow)
+  ccache # compiles once per source and flags on this machine, across clones and build folders (sgp_build)
 )
 
 sgp_install() {
@@ -43,6 +44,16 @@ sgp_build() {
   local options=() targets=()
   while [ $# -gt 0 ] && [ "$1" != "--" ]; do options+=("$1"); shift; done
   if [ "${1:-}" = "--" ]; then shift; targets=("$@"); fi
+  # Every compile goes through ccache when it is installed: a fresh clone (CI's) or a second build
+  # folder (the sanitizer build, extension.SlicerConfigure's, which inherits these variables) then
+  # recompiles only what changed since any earlier build on this machine. Paths are hashed relative
+  # to the clone (CCACHE_BASEDIR, CCACHE_NOHASHDIR), so clones in other folders share the cache; an
+  # object taken from the cache keeps the folder it was first compiled in in its debug information.
+  # SGP_CCACHE=0 compiles without it.
+  if [ "${SGP_CCACHE:-1}" != "0" ] && command -v ccache >/dev/null; then
+    export CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache
+    export CCACHE_BASEDIR="$SGP_ROOT" CCACHE_NOHASHDIR=true
+  fi
   echo "== Configuring in $SGP_BUILD"
   mkdir -p "$SGP_BUILD"
   cmake -S "$SGP_ROOT" -B "$SGP_BUILD" -DCMAKE_BUILD_TYPE=Release "${options[@]}" >"$SGP_BUILD/configure.log" 2>&1 ||

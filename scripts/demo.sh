@@ -32,7 +32,7 @@ echo "== Running StentGraftSimulation (seed $seed, RAS)"
   --returnparameterfile "$demo/results.params" >"$demo/run.log"
 
 "$SGP_PYTHON" - "$demo" <<'PY'
-import json, os, re, sys
+import csv, json, os, re, sys
 demo = sys.argv[1]
 truth = json.load(open(os.path.join(demo, "truth.json")))
 returns = dict(line.split(" = ", 1) for line in open(os.path.join(demo, "results.params")).read().splitlines())
@@ -53,7 +53,7 @@ site = report["proximalSite"]
 print("  proximal implantation site: from the %s (%s), %.1f mm down the aorta"
       % (site["source"], site.get("renal") or "-", site["abscissaMm"]))
 print()
-print("  measurement                         measured      truth    error")
+print("  %-52s %10s %8s %7s" % ("measurement", "measured", "truth", "error"))
 sizing = truth["sizing"]
 # (a)-(f) are outer-wall values (the truth's outer* keys); the lumen values are the truth's plain keys.
 truth_of = dict(neckAngleBeta=sizing["neckAngleBetaDeg"], thrombusVolume=sizing.get("thrombusVolumeMl"),
@@ -66,13 +66,14 @@ for outer in ("proximalNeckDiameter", "neckDiameter15mm", "maxAneurysmDiameter",
               "rightIliacDiameter", "leftIliacDiameter"):
     truth_of[outer] = sizing["outer" + outer[0].upper() + outer[1:]]
     truth_of[outer.replace("Diameter", "LumenDiameter")] = sizing[outer]
-for m in report["measurements"]:
-    value = m["value"]
-    shown = "%8.1f %-5s" % (value, m["unit"]) if value is not None else "   not measured"
-    t = truth_of.get(m["name"])
-    label = m["name"] + (" (%s)" % m["wall"] if m.get("wall") else "")
-    print("  %-42s %s %s" % (label, shown,
-                            "%7.1f  %+6.2f" % (t, value - t) if t is not None and value is not None else ""))
+# The table's label and shown columns are the words and the clinical precision a person reads.
+with open(os.path.join(demo, "measurements.csv"), newline="") as table:
+    rows = list(csv.DictReader(table))
+for row in rows:
+    value = float(row["value"]) if row["value"] not in ("", "nan") else None
+    t = truth_of.get(row["name"])
+    compared = "%8.1f %+7.1f" % (t, value - t) if t is not None and value is not None else ""
+    print("  %-52s %10s %s" % (row["label"], row["shown"], compared))
 device = report.get("device") or {}
 recommendation = device.get("recommendation") or {}
 print()
@@ -81,14 +82,28 @@ for reason in recommendation.get("reasons") or []:
     print("  - " + reason)
 for family in device.get("families") or []:
     failing = [c["text"] for c in family["checks"] if c["status"] != "pass"]
-    print("  %-22s %s" % (family["name"], "within IFU" if family["withinIfu"] else "outside IFU: " + "; ".join(failing)))
+    status = {"pass": "within IFU", "fail": "outside IFU", "indeterminate": "IFU not decided"}[family["ifuStatus"]]
+    print("  %-22s %s" % (family["name"], status + (": " + "; ".join(failing) if failing else "")))
+# The order list: the components a surgeon orders, where each lands, and why (the CLI's summary).
+lines = log.splitlines()
+start = next((i for i, line in enumerate(lines) if line.startswith("Order list:")), None)
+print()
+if start is not None:
+    end = start + 1
+    while end < len(lines) and lines[end].startswith("  "):
+        end += 1
+    print("\n".join(lines[start:end]))
+else:
+    print("Order list: none (%s)" % ((report.get("deployment") or {}).get("unknownReason") or "no device configured"))
 fit = report.get("fitCheck")
 if fit:
     print("Fit check of the simulated %s graft: %s" % (device.get("simulated"), "passed" if fit["passed"] else "FAILED"))
-    print("  seal zones: proximal %.1f mm, right iliac %.1f mm, left iliac %.1f mm"
-          % (fit["proximalSealLengthMm"], fit["rightIliacSealLengthMm"], fit["leftIliacSealLengthMm"]))
-    print("  oversizing: proximal %.1f %%, right limb %.1f %%, left limb %.1f %%"
-          % (fit["proximalOversizingPercent"], fit["rightLimbOversizingPercent"], fit["leftLimbOversizingPercent"]))
+    shown = lambda value, unit: "not known" if value is None else "%.1f %s" % (value, unit)
+    print("  seal on healthy wall: proximal %s, right iliac %s, left iliac %s"
+          % tuple(shown(fit[k], "mm") for k in ("proximalSealLengthMm", "rightIliacSealLengthMm", "leftIliacSealLengthMm")))
+    print("  oversizing: proximal %s, right limb %s, left limb %s"
+          % tuple(shown(fit[k], "%") for k in ("proximalOversizingPercent", "rightLimbOversizingPercent",
+                                               "leftLimbOversizingPercent")))
     print("  ostia covered: " + (", ".join(fit["coveredOstia"]) or "none")
           + "; migration risk: " + ("yes" if fit["migrationRisk"] else "no"))
     for finding in fit["findings"]:
@@ -100,7 +115,7 @@ for name, what in (("phantom.nrrd", "CT volume (HU)"), ("truth.json", "analytic 
                    ("centerlines.vtp", "centerlines (Name, Radius, Abscissa)"),
                    ("landmarks.mrk.json", "landmarks (Slicer markups)"),
                    ("stent.vtp", "stent surface fitted in measure mode"),
-                   ("graft.vtp", "simulated graft (Oversizing, Apposition, Sealing)"),
+                   ("graft.vtp", "simulated graft: every ordered component (ComponentRole, HealthyWall, Sealing)"),
                    ("wall.nrrd", "vessel wall label map (1 lumen, 2 thrombus and wall, 3 calcium)"),
                    ("outer-wall.vtp", "outer wall surface (ThrombusThicknessMm, Supported)"),
                    ("measurements.csv", "measurements table"), ("profile.csv", "diameter profiles"),

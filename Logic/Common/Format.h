@@ -15,9 +15,13 @@ namespace sgp
 inline std::string FormatNumber(double value, int decimals = 1)
 {
   char buffer[64];
-  // + 0.0 turns a negative zero (a negated coordinate of 0) into "0.0" rather than "-0.0".
-  std::snprintf(buffer, sizeof(buffer), "%.*f", decimals, value + 0.0);
-  return buffer;
+  std::snprintf(buffer, sizeof(buffer), "%.*f", decimals, value);
+  // A value that rounds to zero reads "0.0", never "-0.0" (a negated coordinate of 0, a conicity
+  // of −0.02 %).
+  std::string text = buffer;
+  if (text[0] == '-' && text.find_first_not_of("-0.") == std::string::npos)
+    text.erase(0, 1);
+  return text;
 }
 
 /// "(x, y, z)" with one decimal, e.g. for a point in mm.

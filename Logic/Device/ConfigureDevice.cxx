@@ -569,9 +569,9 @@ SideChoice ChooseIpsilateralSide(IpsilateralSide wanted,
                                  double toleranceMm)
 {
   if (wanted == IpsilateralSide::Right)
-    return { 0, "right, as asked (ipsilateralSide)" };
+    return { 0, "right, as chosen in the plan's settings (main body side)" };
   if (wanted == IpsilateralSide::Left)
-    return { 1, "left, as asked (ipsilateralSide)" };
+    return { 1, "left, as chosen in the plan's settings (main body side)" };
   const std::string accessText = "right " + Mm(access[0]) + ", left " + Mm(access[1]);
   const bool bothAccess = std::isfinite(access[0]) && std::isfinite(access[1]);
   if (bothAccess && std::abs(access[0] - access[1]) > toleranceMm)
@@ -590,7 +590,9 @@ SideChoice ChooseIpsilateralSide(IpsilateralSide wanted,
   if (bothAccess && access[0] != access[1])
   {
     const int side = access[0] > access[1] ? 0 : 1;
-    return { side, std::string(SideName(side)) + ": the wider access vessel (" + accessText + ")" };
+    return { side, std::string(SideName(side)) + ": either side will do (access vessels alike within " +
+                     FormatNumber(toleranceMm) + " mm: " + accessText +
+                     "; iliacs alike in tortuosity); the marginally wider one" };
   }
   if (std::isfinite(access[0]) != std::isfinite(access[1]))
   {

@@ -383,6 +383,8 @@ FitCheck CheckGraftFit(const DeployedGraft& graft,
   }
   const double iliacMinimum =
     std::isfinite(context.minimumIliacSealMm) ? context.minimumIliacSealMm : p.minimumIliacSealMm;
+  c.minimumProximalSealMm = p.minimumProximalSealMm;
+  c.minimumIliacSealMm = iliacMinimum;
   for (int side = 0; side < 2; ++side)
     if (c.limbChecked[side] && *iliacSeal[side] < iliacMinimum)
       c.findings.push_back("type Ib endoleak risk: " + std::string(sides[side]) + " iliac seal " +

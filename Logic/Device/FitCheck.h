@@ -118,6 +118,8 @@ struct FitCheck
   Eigen::VectorXi calcified;         ///< #V, 1, 0, −1 not traced
   Eigen::VectorXi sealing;           ///< #V, 0 or 1
   double proximalSealLengthMm = 0.0;
+  double minimumProximalSealMm = 0.0;      ///< the minimum the proximal seal was judged against
+  double minimumIliacSealMm = 0.0;         ///< and each iliac seal (the family's, else FitCheckParams')
   double shortestAppositionLengthMm = 0.0; ///< SAL over the trunk's columns
   double rightIliacSealLengthMm = 0.0;
   double leftIliacSealLengthMm = 0.0;

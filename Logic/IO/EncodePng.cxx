@@ -15,6 +15,27 @@
 namespace sgp
 {
 
+namespace
+{
+
+/// The PNG file of `data` (unsigned char, 1 or 3 components), in memory, by VTK's PNG writer.
+std::string WritePng(vtkImageData* data, const char* kind)
+{
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(data);
+  writer->WriteToMemoryOn();
+  writer->Write();
+  vtkUnsignedCharArray* bytes = writer->GetResult();
+  const int* size = data->GetDimensions();
+  if (!bytes || bytes->GetNumberOfValues() == 0)
+    throw std::runtime_error("VTK's PNG writer produced no bytes for a " + std::to_string(size[0]) + " x " +
+                             std::to_string(size[1]) + kind + " image.");
+  return std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)),
+                     static_cast<size_t>(bytes->GetNumberOfValues()));
+}
+
+} // namespace
+
 std::string EncodeGreyPng(const PlaneImage& image, double lowHu, double highHu)
 {
   if (image.width <= 0 || image.height <= 0 ||
@@ -36,16 +57,7 @@ std::string EncodeGreyPng(const PlaneImage& image, double lowHu, double highHu)
     for (int col = 0; col < image.width; ++col)
       line[col] = static_cast<unsigned char>(std::lround(std::clamp((image.At(col, row) - lowHu) * scale, 0.0, 255.0)));
   }
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(data);
-  writer->WriteToMemoryOn();
-  writer->Write();
-  vtkUnsignedCharArray* bytes = writer->GetResult();
-  if (!bytes || bytes->GetNumberOfValues() == 0)
-    throw std::runtime_error("VTK's PNG writer produced no bytes for a " + std::to_string(image.width) + " x " +
-                             std::to_string(image.height) + " image.");
-  return std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)),
-                     static_cast<size_t>(bytes->GetNumberOfValues()));
+  return WritePng(data.GetPointer(), "");
 }
 
 std::string Base64(std::string_view bytes)
@@ -95,16 +107,7 @@ std::string EncodeRgbPng(const RenderedImage& image)
   for (int row = 0; row < image.height; ++row) // VTK's rows run upward
     std::copy_n(image.rgb.data() + static_cast<size_t>(row) * rowBytes, rowBytes,
                 out + static_cast<size_t>(image.height - 1 - row) * rowBytes);
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(data);
-  writer->WriteToMemoryOn();
-  writer->Write();
-  vtkUnsignedCharArray* bytes = writer->GetResult();
-  if (!bytes || bytes->GetNumberOfValues() == 0)
-    throw std::runtime_error("VTK's PNG writer produced no bytes for a " + std::to_string(image.width) + " x " +
-                             std::to_string(image.height) + " RGB image.");
-  return std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)),
-                     static_cast<size_t>(bytes->GetNumberOfValues()));
+  return WritePng(data.GetPointer(), " RGB");
 }
 
 std::string PngDataUri(const RenderedImage& image)

@@ -229,7 +229,11 @@ void OrderSection(const RepairPlan& plan, const std::map<std::string, PlanValue>
   out << "</table><table><tr><th>junction</th><th>overlap</th><th>needs</th></tr>";
   for (const ComponentOverlap& o : c->overlaps)
     out << "<tr><td>" << Escape(o.junction) << "</td><td class=\"num\">" << Escape(ClinicalText(o.overlapMm, "mm"))
-        << "</td><td class=\"num\">" << Num(o.minMm) << " – " << Num(o.maxMm) << " mm</td></tr>";
+        << "</td><td class=\"num\">"
+        << (!std::isfinite(o.maxMm)    ? "≥ " + Num(o.minMm)
+            : o.maxMm - o.minMm < 0.05 ? Num(o.minMm)
+                                       : Num(o.minMm) + " – " + Num(o.maxMm))
+        << " mm</td></tr>";
   out << "</table><ul>";
   for (std::size_t i = 1; i < lines.size(); ++i)
     if (lines[i].find("side: covered") != std::string::npos || lines[i].find("FINDING") != std::string::npos ||
@@ -533,14 +537,19 @@ void FitCheckSection(const RepairPlan& plan,
   };
   const std::string lumenOnly = " (estimated: the outer wall not traced under part of it)";
   out << "<table><tr><th>the simulated graft</th><th>value</th><th>needs</th></tr>";
+  row("main body diameter", "mainBodyDiameter", plan.graftDiametersMm[0], "mm", "");
+  row("right limb diameter where it lands", "rightLimbDiameter", plan.graftDiametersMm[1], "mm", "");
+  row("left limb diameter where it lands", "leftLimbDiameter", plan.graftDiametersMm[2], "mm", "");
+  const std::string proximalNeeds = "≥ " + FormatNumber(fit.minimumProximalSealMm, 0) + " mm";
+  const std::string iliacNeeds = "≥ " + FormatNumber(fit.minimumIliacSealMm, 0) + " mm (the family's minimum)";
   row(std::string("proximal seal on healthy wall") + (fit.sealOnLumenOnly[0] ? lumenOnly : ""), "proximalSealLength",
       fit.proximalSealLengthMm, "mm",
-      "≥ 10 mm" + (fit.proximalSealEnd.empty() ? "" : "; ends where " + fit.proximalSealEnd));
-  row("shortest apposition length (any side)", "", fit.shortestAppositionLengthMm, "mm", "≥ 10 mm");
+      proximalNeeds + (fit.proximalSealEnd.empty() ? "" : "; ends where " + fit.proximalSealEnd));
+  row("shortest apposition length (any side)", "", fit.shortestAppositionLengthMm, "mm", proximalNeeds);
   row(std::string("right iliac seal on healthy wall") + (fit.sealOnLumenOnly[1] ? lumenOnly : ""),
-      "rightIliacSealLength", fit.rightIliacSealLengthMm, "mm", "the family's minimum iliac seal");
+      "rightIliacSealLength", fit.rightIliacSealLengthMm, "mm", iliacNeeds);
   row(std::string("left iliac seal on healthy wall") + (fit.sealOnLumenOnly[2] ? lumenOnly : ""), "leftIliacSealLength",
-      fit.leftIliacSealLengthMm, "mm", "the family's minimum iliac seal");
+      fit.leftIliacSealLengthMm, "mm", iliacNeeds);
   row("main body oversizing at the proximal edge", "proximalOversizing", fit.proximalOversizingPercent, "%",
       "10–25 %; over 30 %: infolding");
   row("right limb oversizing in the landing zone", "rightLimbOversizing", fit.rightLimbOversizingPercent, "%",

@@ -147,6 +147,8 @@ nlohmann::json FitCheckToJson(const FitCheck& check)
            { "limbsChecked", { { "right", check.limbChecked[0] }, { "left", check.limbChecked[1] } } },
            { "migrationRisk", check.migrationRisk },
            { "proximalSealLengthMm", check.proximalSealLengthMm },
+           { "minimumProximalSealMm", check.minimumProximalSealMm },
+           { "minimumIliacSealMm", check.minimumIliacSealMm },
            { "proximalSealEnd", check.proximalSealEnd },
            { "shortestAppositionLengthMm", JsonNumber(check.shortestAppositionLengthMm) },
            { "proximalCalcifiedPercent", check.proximalCalcifiedPercent },

@@ -40,7 +40,8 @@ void WriteDiameterProfiles(const Measurements& measurements, const std::string& 
 /// "warnings": […]}.
 nlohmann::json MeasurementsToJson(const Measurements& measurements);
 
-/// {"passed", "migrationRisk", "proximalSealLengthMm", "proximalSealEnd" (why it ends, words),
+/// {"passed", "migrationRisk", "proximalSealLengthMm", "minimumProximalSealMm", "minimumIliacSealMm"
+/// (the minimums the seals were judged against), "proximalSealEnd" (why it ends, words),
 /// "shortestAppositionLengthMm", "proximalCalcifiedPercent", "sealEstimatedOnLumen": {"proximal",
 /// "right", "left"}, "sealDefinition", "rightIliacSealLengthMm",
 /// "leftIliacSealLengthMm", "proximalOversizingPercent", "rightLimbOversizingPercent",

@@ -157,8 +157,12 @@ void WritePlanOutputs(const RepairPlan& plan,
     if (!plan.HasGraft())
       throw std::logic_error("WritePlanOutputs: outputSimulatedStentModel was asked for, but no graft was simulated");
     const GraftLayout& layout = plan.graft.layout;
+    Eigen::VectorXd role(layout.component.size());
+    for (Eigen::Index i = 0; i < role.size(); ++i)
+      role[i] = double(int(layout.components[std::size_t(layout.component[i])].role));
     WriteStentModel(layout.mesh, plan.graft.fit.V, plan.graft.fit.radiusMm, plan.graft.fit.wallDistanceMm,
                     { { "Component", layout.component.cast<double>() },
+                      { "ComponentRole", role },
                       { "InnerComponent", layout.innerComponent.cast<double>() },
                       { "NominalRadius", layout.nominalRadiusMm },
                       { "Oversizing", plan.fitCheck.oversizingPercent },

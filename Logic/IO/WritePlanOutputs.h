@@ -21,14 +21,19 @@ namespace sgp
 
 struct PlanOutputPaths
 {
-  std::string labelMap;               ///< the lumen, on the input's grid
-  std::string wallLabelMap;           ///< lumen 1, thrombus and wall 2, calcium 3, on the input's grid
-  std::string outerWallModel;         ///< the traced outer wall, .vtp
-  std::string centerlines;            ///< .vtp
-  std::string landmarks;              ///< .mrk.json
-  std::string stentModel;             ///< the fitted surface
-  std::string initialStentModel;      ///< the surface before the fit
-  std::string simulatedStentModel;    ///< the simulated graft with its fit-check point data
+  std::string labelMap;          ///< the lumen, on the input's grid
+  std::string wallLabelMap;      ///< lumen 1, thrombus and wall 2, calcium 3, on the input's grid
+  std::string outerWallModel;    ///< the traced outer wall, .vtp
+  std::string centerlines;       ///< .vtp
+  std::string landmarks;         ///< .mrk.json
+  std::string stentModel;        ///< the fitted surface
+  std::string initialStentModel; ///< the surface before the fit
+  /// The simulated graft with its components and fit check as point data: Component (index into
+  /// the report's deployment.components), ComponentRole (OrderRole: 0 main body, 1 ipsilateral
+  /// limb, 2 contralateral limb, 3 iliac extension, 4 aortic cuff), InnerComponent (−1 outside
+  /// overlaps), NominalRadius (mm), Oversizing (%), Apposition (mm), HealthyWall (1, 0, −1 not
+  /// traced), ThrombusUnder (mm, NaN not traced), Calcified (1, 0, −1), Sealing (0/1).
+  std::string simulatedStentModel;
   std::string measurements;           ///< the table, .csv
   std::string diameterProfile;        ///< per ring, .csv
   std::string report;                 ///< the whole plan, .json

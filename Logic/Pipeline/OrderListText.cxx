@@ -85,8 +85,14 @@ std::vector<std::string> OrderLines(const RepairPlan& plan)
     lines.push_back("  " + RoleWords(part) + ": " + part.OrderText() + ", " + where);
   }
   for (const ComponentOverlap& o : c->overlaps)
-    lines.push_back("  overlap, " + o.junction + ": " + Mm(o.overlapMm) + " (needs " + FormatNumber(o.minMm) + "–" +
-                    FormatNumber(o.maxMm) + " mm)");
+  {
+    // The window the junction allows: [min, max], one number when the stub allows only the
+    // minimum, open above when the catalogue gives no maximum.
+    const std::string needs = !std::isfinite(o.maxMm)    ? "≥ " + Mm(o.minMm)
+                              : o.maxMm - o.minMm < 0.05 ? Mm(o.minMm)
+                                                         : FormatNumber(o.minMm) + "–" + Mm(o.maxMm);
+    lines.push_back("  overlap, " + o.junction + ": " + Mm(o.overlapMm) + " (needs " + needs + ")");
+  }
   for (int side = 0; side < 2; ++side)
   {
     const double margin = c->marginToInternalIliacMm[side];

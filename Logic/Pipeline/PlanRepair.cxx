@@ -5,6 +5,7 @@
 #include <functional>
 #include <future>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "Centerlines/AssignInscribedRadii.h"
@@ -22,6 +23,10 @@ namespace sgp
 {
 namespace
 {
+
+/// The shell of the wall distance field around the lumen wall, mm (WallDistanceField.h): the
+/// forces act within it.
+constexpr double WallBandMm = 5.0;
 
 /// The observer, and the plan's warnings list that every warning also goes to.
 class StageReporter
@@ -81,6 +86,36 @@ void ExtractCenterlines(const PlanParams& params, const StageReporter& report, R
   AssignInscribedRadii(plan.centerlines, skeleton);
 }
 
+/// The region of the wall field the fits share: the measure-mode surface's reach (StentReach),
+/// and where the ordered graft goes beyond it — each leg 16 mm further down its iliac (the measured
+/// legs end 5 mm above the internal iliac origin, a planned distal edge at most at its ostium), the
+/// trunk up by a negative deployment offset. A graft that still reaches past it (a limb a length
+/// step over the ostium, the fallback of ConfigureDevice) gets a field of its own.
+std::vector<Ball> SharedFieldReach(const StentMesh& mesh, const CenterlineTree& tree, double deploymentOffsetMm)
+{
+  std::vector<Ball> balls = StentReach(mesh, tree);
+  constexpr double StepMm = 4.0, LegBeyondMm = 16.0;
+  const auto add = [&](const Centerline& c, double s) {
+    balls.push_back({ PositionAt(c, s), 1.5 * RadiusAt(c, s) + 10.0 });
+  };
+  const Centerline* iliac[2] = { &tree.rightIliac, &tree.leftIliac };
+  for (int side = 0; side < 2; ++side)
+  {
+    const std::vector<double>& rings = mesh.ringAbscissaMm[std::size_t(1 + side)];
+    if (rings.empty())
+      continue;
+    for (double s = rings.back() + StepMm; s <= std::min(rings.back() + LegBeyondMm, iliac[side]->LengthMm());
+         s += StepMm)
+      add(*iliac[side], s);
+  }
+  const std::vector<double>& trunk = mesh.ringAbscissaMm[0];
+  if (!trunk.empty())
+    for (double s = trunk.front() - StepMm; s >= std::max(0.0, trunk.front() + deploymentOffsetMm - StepMm);
+         s -= StepMm)
+      add(tree.aorta, s);
+  return balls;
+}
+
 /// The proximal site, the mesh, the wall field and the fit in acmMode; returns the wall field,
 /// which the later fits share.
 WallDistanceField FitStentSurface(const PlanRequest& request,
@@ -98,7 +133,8 @@ WallDistanceField FitStentSurface(const PlanRequest& request,
   if (meshParams.proximalAbscissaMm < 0.0)
     meshParams.proximalAbscissaMm = plan.site.abscissaMm;
   plan.mesh = BuildStentMesh(plan.centerlines, meshParams);
-  WallDistanceField wall = WallDistanceField::FromLumen(*plan.lumen.mask, 5.0, StentReach(plan.mesh, plan.centerlines));
+  WallDistanceField wall = WallDistanceField::FromLumen(
+    *plan.lumen.mask, WallBandMm, SharedFieldReach(plan.mesh, plan.centerlines, params.deploymentOffsetMm));
   if (request.initialSurfaceValues)
   {
     const Eigen::Index n = plan.mesh.V.rows();
@@ -309,8 +345,12 @@ void SimulateTheMainBodyOnly(const WallDistanceField& wall,
 }
 
 /// The ordered configuration deployed at its target (DeployGraft.h) and its fit check, with the
-/// configuration's findings.
-void SimulateTheConfiguration(const PlanParams& params, const StageReporter& report, RepairPlan& plan)
+/// configuration's findings. The measure-mode fit's wall field serves when it covers the graft's
+/// reach (the graft lies within the measured extents: the usual case); else one is made for it.
+void SimulateTheConfiguration(const WallDistanceField& measureWall,
+                              const PlanParams& params,
+                              const StageReporter& report,
+                              RepairPlan& plan)
 {
   report.Begin("SimulateGraft", "Deploying the ordered stent graft in the vessel");
   plan.simulatedFamily = plan.orderedFamily;
@@ -327,9 +367,11 @@ void SimulateTheConfiguration(const PlanParams& params, const StageReporter& rep
   const int ipsi = configuration.ipsilateralSide;
   if (std::isnan(plan.graftDiametersMm[std::size_t(1 + ipsi)])) // the main body's own leg lands
     plan.graftDiametersMm[std::size_t(1 + ipsi)] = layout.components.front().item.distalDiameterMm;
-  const WallDistanceField wall =
-    WallDistanceField::FromLumen(*plan.lumen.mask, 5.0, StentReach(layout.mesh, plan.centerlines));
-  plan.graft = DeployGraft(std::move(layout), wall, params.graft, report.Callback());
+  const std::vector<Ball> reach = StentReach(layout.mesh, plan.centerlines);
+  std::optional<WallDistanceField> ownWall;
+  if (!measureWall.Covers(*plan.lumen.mask, WallBandMm, reach))
+    ownWall = WallDistanceField::FromLumen(*plan.lumen.mask, WallBandMm, reach);
+  plan.graft = DeployGraft(std::move(layout), ownWall ? *ownWall : measureWall, params.graft, report.Callback());
   if (!plan.graft.fit.converged)
     report.Warn("The simulated graft did not converge within " + std::to_string(plan.graft.fit.iterations) +
                 " iterations; the surface written is the last one.");
@@ -382,7 +424,7 @@ void ChooseAndSimulateDevice(const WallDistanceField& wall,
   const DeviceConfiguration* configuration = plan.Configuration();
   if (configuration && configuration->configured)
   {
-    SimulateTheConfiguration(params, report, plan);
+    SimulateTheConfiguration(wall, params, report, plan);
     return;
   }
   plan.simulatedFamily = FamilyToSimulate(plan.selection);

@@ -122,6 +122,8 @@ WallDistanceField WallDistanceField::FromLumen(const LabelImage& lumen, double b
   WallDistanceField field;
   field.m_Size = box.size;
   field.m_Band = bandMm;
+  field.m_FoundFirst = found.first;
+  field.m_FoundSize = found.size;
   field.m_Phi.resize(inside.voxels.size());
   // A voxel farther than the band plus half a voxel is ±band whatever its direction.
   const double farMm = bandMm + 0.5 * std::max({ s[0], s[1], s[2] });
@@ -192,6 +194,19 @@ double WallDistanceField::Sample(const Point3& lps, Eigen::Vector3d* gradient) c
   if (gradient)
     *gradient = m_LpsToIndex.transpose() * g; // chain rule: index = M⁻¹(lps − origin)
   return value;
+}
+
+bool WallDistanceField::Covers(const LabelImage& lumen, double bandMm, const std::vector<Ball>& region) const
+{
+  if (bandMm != m_Band)
+    return false;
+  const IndexBox found = region.empty() ? ForegroundBox(lumen) : ForegroundBoxWithin(lumen, region);
+  if (found.Empty())
+    return false; // FromLumen would throw: let it
+  for (unsigned a = 0; a < 3; ++a)
+    if (found.first[a] < m_FoundFirst[a] || found.first[a] + found.size[a] > m_FoundFirst[a] + m_FoundSize[a])
+      return false;
+  return true;
 }
 
 } // namespace sgp

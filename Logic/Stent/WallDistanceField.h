@@ -40,6 +40,13 @@ public:
   /// φ at `lps` (mm); writes ∇φ (LPS, dimensionless) to `gradient` when it is given.
   double Sample(const Point3& lps, Eigen::Vector3d* gradient = nullptr) const;
 
+  /// Whether this field answers for FromLumen(lumen, bandMm, region): the same lumen (the caller's
+  /// promise: the mask this field was made from), the same band, and the lumen voxels within
+  /// `region` inside the box of lumen voxels this field was built around. Then φ is the same
+  /// distance over the same voxels, its box only larger (cutting the lumen no closer to the
+  /// region). One pass over the lumen's box; no distance is computed.
+  bool Covers(const LabelImage& lumen, double bandMm, const std::vector<Ball>& region) const;
+
 private:
   std::array<long, 3> m_Size{};
   std::vector<float> m_Phi;                                   ///< m_Size[0]·m_Size[1]·m_Size[2], i fastest
@@ -47,6 +54,8 @@ private:
   Eigen::Matrix3d m_IndexToLps = Eigen::Matrix3d::Identity(); ///< direction · diag(spacing)
   Eigen::Matrix3d m_LpsToIndex = Eigen::Matrix3d::Identity();
   double m_Band = 5.0;
+  std::array<long, 3> m_FoundFirst{}; ///< the lumen voxels' box it was built around (image index), before the band
+  std::array<long, 3> m_FoundSize{};
 };
 
 } // namespace sgp

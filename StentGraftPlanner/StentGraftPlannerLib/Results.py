@@ -5,7 +5,8 @@ Four things come back from a run besides the nodes Slicer loads itself:
 - return parameters (``--returnparameterfile``; read in Slicer with
   ``cliNode.GetParameterAsString(name)``): ``readReturnValues``;
 - the measurements table (columns name, value, unit, definition, vessel, abscissaMm, the ring's
-  min/max/area diameters, wall and estimated): ``estimatedNames`` reads which outer-wall diameters
+  min/max/area diameters, wall, estimated, then label and shown: the value in words and at
+  clinical precision, which ``formatValue`` matches): ``estimatedNames`` reads which outer-wall diameters
   sit at a level less than 60 % supported, and ``resultsTableRows`` makes the panel's table of every
   return value with its wall (outer wall or lumen), "not measured" and the estimated flag;
 - the diameter profile table (columns vessel, abscissaMm, meanDiameterMm, minDiameterMm,
@@ -14,10 +15,13 @@ Four things come back from a run besides the nodes Slicer loads itself:
 - the JSON report (``"format": "StentGraftPlanner.report/1"``): ``parseReport`` normalises it,
   treating every missing section as "not shown" rather than an error; ``withReportVerdicts`` lets
   its hostile-neck assessment tell a passed neck from an undecided one (the return value is false
-  for both); ``recommendationLines``/``recommendationHtml`` turn it into the panel's text.
+  for both); ``recommendationLines``/``recommendationHtml`` turn it into the panel's text: the
+  recommendation, its IFU status, each family's checks and the fit check, as sentences (its
+  ``deployment``, the order list, is OrderList.py's).
 
-Units: millimetres, degrees, percent and millilitres, as the CLI writes them. Coordinates in the report are
-LPS (the CLI's frame); nothing here converts them.
+Units: millimetres, degrees, percent and millilitres, as the CLI writes them. What a person reads is
+at clinical precision (STYLE.md B10, the CLI's ValueText.h): 0.1 mm, 0.1 deg, 1 %, 0.01 for a ratio,
+0.1 mL, in words. Coordinates in the report are LPS (the CLI's frame); nothing here converts them.
 """
 
 import collections
@@ -109,6 +113,15 @@ RETURN_VALUES = tuple(
     _number("mainBodyDiameter", "mm", "main body diameter"),
     _number("rightLimbDiameter", "mm", "right limb diameter"),
     _number("leftLimbDiameter", "mm", "left limb diameter"),
+    # Issue 29: the ordered configuration. A limb length of 0 is a value: no limb on that side, the
+    # main body's own ipsilateral leg lands there (ZERO_WORDS).
+    _number("mainBodyLength", "mm", "main body length"),
+    _number("rightLimbLength", "mm", "right limb length"),
+    _number("leftLimbLength", "mm", "left limb length"),
+    # "none" is a result of both: no family has a main body (VALUE_WORDS).
+    _text("ipsilateralSideUsed", "main body introduced from", missing=None),
+    _text("orderList", "order list", missing=None),
+    _text("ifuStatus", "instructions for use (IFU)"),
 )
 
 #: Return values whose -1 (or "none") means "not measured" (derived from RETURN_VALUES).
@@ -132,6 +145,39 @@ DECIDED_FROM = {
 
 #: The recommendedDevice value that means no family passed its IFU checks.
 NO_DEVICE = "none"
+
+#: The words of the CLI's ifuStatus (withinIfu is false both for a failed and for an unchecked
+#: criterion; ifuStatus tells them apart), short and in full.
+IFU_STATUS_WORDS = {"pass": "within IFU", "fail": "outside IFU", "indeterminate": "IFU not determined"}
+IFU_STATUS_SENTENCES = {
+    "pass": "within its instructions for use: every criterion met on measured values",
+    "fail": "outside its instructions for use: a criterion failed on measured values",
+    "indeterminate": "instructions for use not determined: no criterion failed, but one could not be checked "
+    "(a value not measured, within its uncertainty, or sized on the lumen)",
+}
+_IFU_KINDS = {"pass": "ok", "fail": "fail", "indeterminate": "indeterminate"}
+
+#: Text return values shown in words: name -> {the CLI's text: the panel's words}.
+VALUE_WORDS = {
+    "ifuStatus": {
+        "pass": "within IFU: every criterion met on measured values",
+        "fail": "outside IFU: a criterion failed on measured values",
+        "indeterminate": "IFU not determined: no criterion failed, but one could not be checked",
+    },
+    "recommendedDevice": {NO_DEVICE: "none within its instructions for use"},
+    "ipsilateralSideUsed": {"none": "no main body"},
+    "orderList": {"none": "no main body"},
+}
+
+#: Numbers whose 0 is a verdict, not a measurement: name -> the words shown for it.
+ZERO_WORDS = {
+    "rightLimbLength": "no limb: the main body's ipsilateral leg lands on the right",
+    "leftLimbLength": "no limb: the main body's ipsilateral leg lands on the left",
+}
+
+#: Decimals a person reads, per unit (the CLI's ClinicalText): 0.1 mm, 0.1 deg, 1 %, 0.01 for a
+#: ratio ("" or "ratio"), 0.1 mL.
+CLINICAL_DECIMALS = {"mm": 1, "deg": 1, "%": 0, "": 2, "ratio": 2, "mL": 1}
 
 PROFILE_COLUMNS = ("abscissaMm", "meanDiameterMm", "minDiameterMm", "maxDiameterMm", "areaDiameterMm")
 PROFILE_VESSELS = ("aorta", "rightIliac", "leftIliac")
@@ -203,22 +249,41 @@ def automaticSeed(getParameterAsString):
     return point if len(point) == 3 and all(math.isfinite(c) for c in point) else None
 
 
+def clinicalNumber(value, unit):
+    """The number of ``value`` at the clinical precision of ``unit`` (CLINICAL_DECIMALS; 0.1 for
+    another unit), without a sign when it rounds to zero ("0 %", not "-0 %")."""
+    text = "%.*f" % (CLINICAL_DECIMALS.get(unit, 1), value)
+    return text.lstrip("-") if float(text) == 0 else text
+
+
 def formatValue(value, unit):
-    """"23.4 mm", "12 deg", "1.05", "Yes"/"No" for a verdict, or "not measured" for None."""
+    """A value as a person reads it, at clinical precision with its unit, as the measurements table's
+    shown column: "22.1 mm", "34.6°", "15 %", "1.01" (a ratio: unit "" or "ratio"), "135.2 mL";
+    "Yes"/"No" for a verdict, a text as it is, "not measured" for None."""
     if value is None:
         return "not measured"
     if isinstance(value, bool):
         return "Yes" if value else "No"
     if isinstance(value, str):
         return value
-    text = "%.1f" % value
-    return "%s %s" % (text, unit) if unit else "%.2f" % value
+    text = clinicalNumber(value, unit)
+    if unit == "deg":
+        return text + "°"
+    return "%s %s" % (text, unit) if unit not in ("", "ratio") else text
 
 
 def formatReturnValue(item, value):
-    """``formatValue``, but "not determined" for a verdict (a bool) that is None."""
+    """``formatValue`` in words where the value is a verdict: "not determined" for a verdict (a bool)
+    that is None, "not given" for a text that is None, VALUE_WORDS for a text, ZERO_WORDS for a
+    number whose 0 means something."""
     if item.kind == "bool" and value is None:
         return "not determined"
+    if item.kind == "str" and value is None:
+        return "not given"
+    if isinstance(value, str):
+        return VALUE_WORDS.get(item.name, {}).get(value, value)
+    if item.kind == "float" and value == 0 and item.name in ZERO_WORDS:
+        return ZERO_WORDS[item.name]
     return formatValue(value, item.unit)
 
 
@@ -330,9 +395,11 @@ def parseReport(text):
     newer major version would be misread). Every section may be absent:
     returns a dict with proximalSite (dict or None), measurements (list of dicts), warnings (list
     of str), recommendation (dict or None), families (list of dicts, each with a list of checks),
-    fitCheck (dict or None) and hostileNeck (dict or None: the neck's assessment against the
+    fitCheck (dict or None), hostileNeck (dict or None: the neck's assessment against the
     hostile-neck rules, read as {"hostile": bool, "determinate": bool, "summary": str, "checks":
-    [{"name", "status", "text", ...}]}, every field optional).
+    [{"name", "status", "text", ...}]}, every field optional), deployment (dict or None: the ordered
+    configuration, Logic/IO/DeploymentToJson.h; null when no family has a main body) and
+    simulatedFamily (the family of the simulated graft, device.simulated, or None).
     """
     try:
         data = json.loads(text)
@@ -361,6 +428,8 @@ def parseReport(text):
         "families": families,
         "fitCheck": _dict(data.get("fitCheck")),
         "hostileNeck": _dict(data.get("hostileNeck")),
+        "deployment": _dict(data.get("deployment")),
+        "simulatedFamily": device.get("simulated") if isinstance(device.get("simulated"), str) else None,
     }
 
 
@@ -407,33 +476,173 @@ def _normalRecommendation(recommendation, families):
     return normal
 
 
-def _mm(value):
+def _size(value):
+    """A catalogue size as the order list writes it: "25", "14.5" (0.1 mm at most), "?" when missing."""
     number = _toFloat(value)
-    return "?" if number is None else ("%g" % number)
+    if number is None:
+        return "?"
+    text = clinicalNumber(number, "mm")
+    return text[:-2] if text.endswith(".0") else text
 
 
-def _fitCheckLines(fitCheck, prefix="", depth=0):
-    """Generic lines for the fit-check section (its fields are the CLI's to extend)."""
+def _mm(value):
+    """A length or diameter in mm at 0.1 mm ("28.0 mm"), "not measured" when missing."""
+    return formatValue(_toFloat(value), "mm")
+
+
+def _words(name):
+    """An identifier in words: "coveredOstia" -> "covered ostia" (for fields the panel does not know)."""
+    return "".join(" " + c.lower() if c.isupper() else c for c in str(name)).strip()
+
+
+def _family(report, name):
+    """The parsed family entry (``parseReport``'s families) named ``name``, or None."""
+    return next((f for f in report.get("families", []) if name and f["family"] == name), None)
+
+
+def _requirement(family, checkName):
+    """(text, minimum) of a family's check ("right iliac seal length": ("≥ 15 mm", 15.0)), or (None, None)."""
+    check = next((c for c in (family or {}).get("checks", []) if c.get("name") == checkName), None)
+    if check is None:
+        return None, None
+    return check.get("requirement"), _toFloat(check.get("min"))
+
+
+#: The fit check's proximal seal minimum when the report does not give it (fitCheck.minimumProximalSealMm,
+#: written since issue 30): the CLI's FitCheckParams.minimumProximalSealMm, Logic/Device/FitCheck.h.
+MINIMUM_PROXIMAL_SEAL_MM = 10.0
+
+
+def _sealLine(label, length, needsText, minimum, estimated):
+    """("ok"/"fail"/"text", "<label> on healthy wall 25.8 mm (needs ≥ 10 mm), estimated (lumen)")."""
+    value = _toFloat(length)
+    text = "%s on healthy wall %s" % (label, _mm(value))
+    if needsText:
+        text += " (needs %s)" % needsText
+    if estimated:
+        text += ", estimated (lumen): the outer wall not traced under part of it"
+    kind = "text" if value is None or minimum is None else ("ok" if value >= minimum else "fail")
+    return kind, text
+
+
+#: Fit-check fields that fitCheckLines writes as sentences; the others are listed in words.
+_FIT_CHECK_KNOWN = frozenset((
+    "passed", "limbsChecked", "proximalSealLengthMm", "proximalSealEnd", "shortestAppositionLengthMm",
+    "proximalCalcifiedPercent", "rightIliacSealLengthMm", "leftIliacSealLengthMm", "proximalOversizingPercent",
+    "rightLimbOversizingPercent", "leftLimbOversizingPercent", "migrationRisk", "coveredOstia", "ostia",
+    "findings", "sealDefinition", "sealEstimatedOnLumen", "minimumProximalSealMm", "minimumIliacSealMm",
+))
+
+
+def fitCheckLines(fitCheck, family=None):
+    """The report's fit check of the simulated graft as (kind, sentence) lines, at clinical precision.
+
+    fitCheck: the report's fitCheck object (every field optional). family: the parsed family entry of
+    the simulated graft (``parseReport``'s families), whose "right/left iliac seal length" checks give
+    the iliac seal requirement's words. The minimums are the report's (minimumProximalSealMm,
+    minimumIliacSealMm); without them the proximal one is MINIMUM_PROXIMAL_SEAL_MM and the iliac one
+    the family's check's, else none is shown. E.g. ("ok", "proximal seal on healthy wall 25.8 mm (needs ≥ 10 mm); the
+    seal ends where the aorta widens …"). Fields the panel does not know follow in words.
+    """
     lines = []
+    passed = fitCheck.get("passed")
+    if isinstance(passed, bool):
+        lines.append(("ok", "The simulated graft passes the fit check.") if passed
+                     else ("fail", "The simulated graft does not pass the fit check."))
+    checked = _dict(fitCheck.get("limbsChecked")) or {}
+    for side in ("right", "left"):
+        if checked.get(side) is False:
+            lines.append(("indeterminate", "The %s limb was not sized (the scan ends above its landing zone): its "
+                                           "seal, oversizing and internal iliac are not checked." % side))
+    onLumen = _dict(fitCheck.get("sealEstimatedOnLumen")) or {}
+    proximalMinimum = _toFloat(fitCheck.get("minimumProximalSealMm"))
+    proximalMinimum = MINIMUM_PROXIMAL_SEAL_MM if proximalMinimum is None else proximalMinimum
+    if "proximalSealLengthMm" in fitCheck:
+        kind, text = _sealLine("proximal seal", fitCheck["proximalSealLengthMm"],
+                               "≥ %s mm" % _size(proximalMinimum), proximalMinimum,
+                               onLumen.get("proximal") is True)
+        if fitCheck.get("proximalSealEnd"):
+            text += "; the seal ends where %s" % fitCheck["proximalSealEnd"]
+        lines.append((kind, text))
+    if "shortestAppositionLengthMm" in fitCheck:
+        lines.append(("text", "shortest apposition length %s (the shortest sealed length of the graft's columns "
+                              "from its proximal edge)" % _mm(fitCheck["shortestAppositionLengthMm"])))
+    if "proximalCalcifiedPercent" in fitCheck:
+        lines.append(("text", "calcified share of the proximal seal zone %s"
+                      % formatValue(_toFloat(fitCheck["proximalCalcifiedPercent"]), "%")))
+    for side in ("right", "left"):
+        key = side + "IliacSealLengthMm"
+        if key in fitCheck and checked.get(side) is not False:
+            needsText, minimum = _requirement(family, side + " iliac seal length")
+            reported = _toFloat(fitCheck.get("minimumIliacSealMm"))
+            if reported is not None:
+                needsText, minimum = "≥ %s mm" % _size(reported), reported
+            lines.append(_sealLine(side + " iliac seal", fitCheck[key], needsText, minimum, onLumen.get(side) is True))
+    for key, label in (("proximalOversizingPercent", "main body oversizing at the proximal edge"),
+                       ("rightLimbOversizingPercent", "right limb oversizing in the landing zone"),
+                       ("leftLimbOversizingPercent", "left limb oversizing in the landing zone")):
+        if key in fitCheck:
+            lines.append(("text", "%s %s" % (label, formatValue(_toFloat(fitCheck[key]), "%"))))
+    risk = fitCheck.get("migrationRisk")
+    if isinstance(risk, bool):
+        lines.append(("fail", "migration risk: the proximal seal is shorter than %s" % _mm(proximalMinimum))
+                     if risk else ("text", "migration risk: no"))
+    if "coveredOstia" in fitCheck:
+        covered = _list(fitCheck["coveredOstia"])
+        if not covered:
+            lines.append(("ok", "no ostium covered"))
+        for ostium in covered:
+            text = (ostium.get("text") or _words(ostium.get("name", "?"))) if isinstance(ostium, dict) else (
+                "covers the %s ostium" % _words(ostium))
+            lines.append(("fail", text))
+    for finding in _list(fitCheck.get("findings")):
+        lines.append(("fail", str(finding)))
+    if fitCheck.get("sealDefinition"):
+        lines.append(("text", "Sealed means %s." % fitCheck["sealDefinition"]))
     for key, value in fitCheck.items():
-        label = prefix + str(key)
-        if isinstance(value, dict) and depth < 2:
-            lines.extend(_fitCheckLines(value, label + " ", depth + 1))
-        elif isinstance(value, list):
-            for item in value:
-                if isinstance(item, dict):
-                    text = item.get("text") or ", ".join("%s %s" % kv for kv in sorted(item.items()))
-                    kind = "fail" if item.get("status") == "fail" else "text"
-                    lines.append((kind, "%s: %s" % (label, text)))
-                else:
-                    lines.append(("text", "%s: %s" % (label, item)))
-        elif isinstance(value, bool):
-            lines.append(("text", "%s: %s" % (label, "yes" if value else "no")))
-        elif isinstance(value, float):
-            lines.append(("text", "%s: %.1f" % (label, value)))
-        else:
-            lines.append(("text", "%s: %s" % (label, value)))
+        if key not in _FIT_CHECK_KNOWN:
+            lines.extend(_genericLines(key, value))
     return lines
+
+
+#: Unit suffixes of the report's field names, and the unit each is shown in (``_genericLines``).
+_FIELD_UNITS = (("Mm", "mm"), ("Percent", "%"), ("Deg", "deg"), ("Ml", "mL"))
+
+
+def _genericLines(key, value, prefix=""):
+    """A field the panel does not know, in words: "gap to wall: 2.3 mm" for gapToWallMm (a number at
+    the clinical precision of its name's unit suffix, else 0.1; a count as it is), "yes"/"no", lists
+    one line each."""
+    key = str(key)
+    suffix, unit = next(((suffix, unit) for suffix, unit in _FIELD_UNITS if key.endswith(suffix)), ("", None))
+    label = prefix + _words(key[: len(key) - len(suffix)])
+    if isinstance(value, list):
+        lines = []
+        for item in value:
+            if isinstance(item, dict):
+                text = item.get("text") or ", ".join("%s %s" % (_words(k), v) for k, v in sorted(item.items()))
+                lines.append(("fail" if item.get("status") == "fail" else "text", "%s: %s" % (label, text)))
+            else:
+                lines.append(("text", "%s: %s" % (label, item)))
+        return lines
+    if isinstance(value, dict):
+        return [line for inner, innerValue in value.items() for line in _genericLines(inner, innerValue, label + " ")]
+    if isinstance(value, bool):
+        return [("text", "%s: %s" % (label, "yes" if value else "no"))]
+    if isinstance(value, int) and not unit:
+        return [("text", "%s: %d" % (label, value))]  # a count
+    if isinstance(value, (int, float)):
+        return [("text", "%s: %s" % (label, formatValue(float(value), unit) if unit else clinicalNumber(value, None)))]
+    return [("text", "%s: %s" % (label, "not measured" if value is None else value))]
+
+
+def _estimatedText(entry, levelsKey="estimatedLevels"):
+    """" — estimated (lumen) at (a), (b)" where an entry (recommendation, family, deployment) is
+    estimated on the lumen; "" otherwise."""
+    if (entry or {}).get("estimated") != "lumen":
+        return ""
+    levels = [str(level) for level in _list(entry.get(levelsKey))]
+    return " — estimated (lumen)" + (" at " + ", ".join(levels) if levels else "")
 
 
 def recommendationLines(report):
@@ -442,17 +651,20 @@ def recommendationLines(report):
     lines = []
     recommendation = report.get("recommendation")
     if recommendation is not None:
-        status = recommendation.get("status")
+        status, ifuStatus = recommendation.get("status"), recommendation.get("ifuStatus")
+        estimated = _estimatedText(recommendation)
         if status == "recommended":
+            kind = {"fail": "fail", "indeterminate": "indeterminate"}.get(ifuStatus, "ok")
             lines.append(
                 (
-                    "ok",
-                    "Recommended: %s, main body %s mm, right limb %s mm, left limb %s mm"
+                    kind,
+                    "Recommended: %s, main body %s mm, right limb %s mm, left limb %s mm%s"
                     % (
                         recommendation.get("family", "?"),
-                        _mm(recommendation.get("mainBodyDiameterMm")),
-                        _mm(recommendation.get("rightLimbDiameterMm")),
-                        _mm(recommendation.get("leftLimbDiameterMm")),
+                        _size(recommendation.get("mainBodyDiameterMm")),
+                        _size(recommendation.get("rightLimbDiameterMm")),
+                        _size(recommendation.get("leftLimbDiameterMm")),
+                        estimated,
                     ),
                 )
             )
@@ -462,6 +674,12 @@ def recommendationLines(report):
             lines.append(("fail", "%s is outside its instructions for use." % recommendation.get("family")))
         else:
             lines.append(("indeterminate", "Device recommendation: unknown status %r." % status))
+        if ifuStatus in IFU_STATUS_SENTENCES and not (status != "recommended" and ifuStatus == "fail"):
+            sentence = IFU_STATUS_SENTENCES[ifuStatus]
+            lines.append((_IFU_KINDS[ifuStatus], sentence[0].upper() + sentence[1:] + "."))
+        if estimated:
+            lines.append(("indeterminate",
+                          "Estimated (lumen): sized on the lumen where the outer wall was not traced."))
         if recommendation.get("summary"):
             lines.append(("text", str(recommendation["summary"])))
         for reason in recommendation["reasons"]:
@@ -474,11 +692,15 @@ def recommendationLines(report):
         lines.append((kind, "Proximal implantation site from %s." % where))
     for family in report.get("families", []):
         counts = collections.Counter(c.get("status") for c in family["checks"])
+        entry = family["entry"]
+        status = IFU_STATUS_WORDS.get(entry.get("ifuStatus"))
+        qualifiers = ", ".join(q for q in (status, _estimatedText(entry)[3:]) if q)
         lines.append(
             (
                 "heading",
-                "%s: %d pass, %d fail, %d indeterminate"
-                % (family["family"], counts["pass"], counts["fail"], counts["indeterminate"]),
+                "%s%s: %d pass, %d fail, %d indeterminate"
+                % (family["family"], " (%s)" % qualifiers if qualifiers else "", counts["pass"], counts["fail"],
+                   counts["indeterminate"]),
             )
         )
         for check in family["checks"]:
@@ -486,6 +708,12 @@ def recommendationLines(report):
             if status in ("fail", "indeterminate"):
                 text = check.get("text") or check.get("criterion", "?")
                 lines.append((status, text))
+        configuration = _dict(entry.get("configuration"))
+        if configuration is not None and configuration.get("configured") is False:
+            reason = configuration.get("unknownReason") or "no reason given"
+            lines.append(("indeterminate", "Not configured: %s." % reason))
+        elif configuration is not None and configuration.get("orderList"):
+            lines.append(("text", "Order list: %s" % configuration["orderList"]))
     neck = report.get("hostileNeck")
     if neck:
         lines.append(("heading", "Hostile-neck rules"))
@@ -498,8 +726,9 @@ def recommendationLines(report):
                 lines.append((check["status"], str(check.get("text") or check.get("name", "?"))))
     fitCheck = report.get("fitCheck")
     if fitCheck:
-        lines.append(("heading", "Fit check of the simulated graft"))
-        lines.extend(_fitCheckLines(fitCheck))
+        simulated = report.get("simulatedFamily") or (report.get("deployment") or {}).get("family")
+        lines.append(("heading", "Fit check of the simulated graft" + (" (%s)" % simulated if simulated else "")))
+        lines.extend(fitCheckLines(fitCheck, _family(report, simulated)))
     for warning in report.get("warnings", []):
         lines.append(("warning", "Warning: " + warning))
     return lines
@@ -508,10 +737,11 @@ def recommendationLines(report):
 _HTML_COLOURS = {"ok": "#1a7f37", "fail": "#cf222e", "indeterminate": "#9a6700", "warning": "#9a6700"}
 
 
-def recommendationHtml(report):
-    """The recommendation as rich text for a QLabel (every text escaped)."""
+def linesHtml(lines):
+    """(kind, text) lines as rich text for a QLabel: headings bold, verdicts coloured, text indented;
+    every text escaped. "" for no line."""
     parts = []
-    for kind, text in recommendationLines(report):
+    for kind, text in lines:
         escaped = html.escape(text)
         if kind == "heading":
             parts.append("<b>%s</b>" % escaped)
@@ -519,7 +749,12 @@ def recommendationHtml(report):
             parts.append('<span style="color:%s">%s</span>' % (_HTML_COLOURS[kind], escaped))
         else:
             parts.append("&nbsp;&nbsp;" + escaped)
-    return "<br>".join(parts) if parts else "The report holds no device recommendation."
+    return "<br>".join(parts)
+
+
+def recommendationHtml(report):
+    """The recommendation as rich text for a QLabel (every text escaped)."""
+    return linesHtml(recommendationLines(report)) or "The report holds no device recommendation."
 
 
 def measurementSummaryLines(values, measurementRows=()):

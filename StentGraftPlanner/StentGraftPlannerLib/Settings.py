@@ -4,9 +4,9 @@ Each setting has a name, a kind, a default and the name of the widget in
 ``Resources/UI/StentGraftPlanner.ui`` that edits it. Settings whose ``cli`` flag is set go to
 the CLI under the same name, so their names and defaults must equal the ``<name>`` and
 ``<default>`` of ``CLI/StentGraftSimulation.xml`` (the single source of truth; a CTest test
-compares the two). The others are combined into one CLI argument each (``device``,
-``proximalOversizingRange``), or sent only when set (``deviceCatalog``, ``neckRules``: an empty
-path leaves the CLI on the file installed beside it).
+compares the two, and each widget's range with the XML's ``<constraints>``). The others are
+combined into one CLI argument each (``device``, ``proximalOversizingRange``), or sent only when
+set (``deviceCatalog``, ``neckRules``: an empty path leaves the CLI on the file installed beside it).
 
 Settings are stored in the module's parameter node as strings (``settingsToStrings`` and
 ``settingsFromStrings``), so the panel state is saved with the scene; a scene from an older
@@ -72,6 +72,11 @@ SETTINGS = (
     _setting("deviceDiameterMm", "float", 0.0, "deviceDiameterSpinBox", cli=False),
     _setting("oversizingMinPercent", "float", 10.0, "oversizingMinSpinBox", cli=False),
     _setting("oversizingMaxPercent", "float", 20.0, "oversizingMaxSpinBox", cli=False),
+    # Deployment (XML group "Stent graft", issue 29): the side the main body goes up (auto: the wider
+    # access vessel, then the less tortuous iliac), and where its proximal fabric edge is deployed,
+    # in mm below the lower edge of the lowest renal ostium (negative: above; the CLI checks -30 to 60).
+    _setting("ipsilateralSide", "enum", "auto", "ipsilateralSideComboBox", choices=("auto", "right", "left")),
+    _setting("deploymentOffsetMm", "float", 0.0, "deploymentOffsetMmSpinBox"),
     _setting("deviceCatalogPath", "str", "", "deviceCatalogPathLineEdit", cli=False),
     # Hostile-neck rule set: the CLI's neckRules, sent only when a file is chosen.
     _setting("neckRulesPath", "str", "", "neckRulesPathLineEdit", cli=False),

@@ -10,6 +10,8 @@ that way in CTest (``Testing/Python``).
 - ``CliRun``: the CLI looked up when a run starts, started without display update, and a run in
   flight followed and, when the scene closes, cancelled.
 - ``Results``: reading what the CLI returns (return parameters, the diameter-profile table, the JSON
-  report) and formatting the device recommendation.
-- ``Appearance``: colours and opacities of the outputs and of the plot series.
+  report) and formatting, at clinical precision and in words, the order list beside the anatomy,
+  the device recommendation and the fit check.
+- ``Appearance``: colours and opacities of the outputs and of the plot series, and the colours of
+  the simulated graft's components.
 """

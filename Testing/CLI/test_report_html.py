@@ -191,8 +191,7 @@ def check_order_and_graft(ok, dom, names, returned, deployment, workdir):
     for component in deployment["components"] if deployment else []:
         side = "right" if component["vessel"] in ("rightIliac",) else "left" if component["vessel"] == "leftIliac" else None
         if component["role"] in ("ipsilateralLimb", "contralateralLimb"):
-            lengths[(side, component["role"].replace("Limb", " limb").replace("ipsilateral", "ipsilateral")
-                     .replace("contralateral", "contralateral"))] = component["lengthMm"]
+            lengths[(side, component["role"].replace("Limb", " limb"))] = component["lengthMm"]
     for (side, role), length in lengths.items():
         drawn = [c for c in names.components if c[0] == side and c[1] == role]
         ok(drawn and abs((drawn[0][3] - drawn[0][2]) - length) <= 1.0,

@@ -62,7 +62,9 @@ TEST(ReadDeviceCatalog, ShippedCatalogue_LoadsValidatesAndCarriesEvidence)
     {
       EXPECT_NE(c.evidence.find('['), std::string::npos) << c.Label();
       if (c.role == ComponentRole::Limb)
+      {
         EXPECT_TRUE(std::isfinite(c.lengthMm)) << c.Label();
+      }
     }
     EXPECT_FALSE(f.ComponentsOf(ComponentRole::MainBody).empty());
     EXPECT_FALSE(f.ComponentsOf(ComponentRole::Limb).empty());

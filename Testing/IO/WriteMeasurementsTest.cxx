@@ -77,15 +77,19 @@ TEST(WriteMeasurements, Table_HeaderQuotedTextEmptyWhenNotMeasured)
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0],
             (std::vector<std::string>{ "name", "value", "unit", "definition", "vessel", "abscissaMm", "minDiameterMm",
-                                       "maxDiameterMm", "areaDiameterMm", "wall", "estimated" }));
-  EXPECT_EQ(rows[1], (std::vector<std::string>{ "proximalNeckDiameter", "22.25", "mm",
-                                                "(a) area-equivalent diameter, outer wall, \"quoted\"", "aorta", "88.5",
-                                                "21.5", "23", "22", "outer", "true" }));
+                                       "maxDiameterMm", "areaDiameterMm", "wall", "estimated", "label", "shown" }));
+  // The value at full precision for machines; its words and clinical precision for a person.
+  EXPECT_EQ(rows[1], (std::vector<std::string>{
+                       "proximalNeckDiameter", "22.25", "mm", "(a) area-equivalent diameter, outer wall, \"quoted\"",
+                       "aorta", "88.5", "21.5", "23", "22", "outer", "true",
+                       "(a) neck diameter at the proximal site, outer wall", "22.2 mm (estimated)" }));
   EXPECT_EQ(rows[2][9], "");       // neither wall applies
   EXPECT_EQ(rows[2][10], "false"); // not estimated
   EXPECT_EQ(rows[2][0], "neckAngleAlpha");
   EXPECT_EQ(rows[2][1], ""); // not measured: empty, never "nan"
   EXPECT_EQ(rows[2][6], "");
+  EXPECT_EQ(rows[2][11], "neck angle α (suprarenal aorta to neck)");
+  EXPECT_EQ(rows[2][12], "not measured");
 }
 
 TEST(WriteMeasurements, Profile_OneRowPerRing)

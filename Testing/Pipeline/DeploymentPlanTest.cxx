@@ -4,6 +4,7 @@
 // against where it was deployed, and the seal on healthy wall against the phantom's own healthy
 // neck.
 #include <algorithm>
+#include <iostream>
 #include <cmath>
 #include <map>
 #include <string>
@@ -19,6 +20,7 @@
 #include "Pipeline/PlanRepair.h"
 #include "Pipeline/PlanValues.h"
 #include "Stent/WallDistanceField.h"
+#include "ShippedPlanParams.h"
 
 namespace sgp
 {
@@ -30,15 +32,7 @@ constexpr double ExactMm = 1e-9;
 /// The simulated graft's positions and lengths: the bar.
 constexpr double DeployedMm = 1.0;
 
-PlanParams DefaultParams()
-{
-  PlanParams params;
-  params.catalog = ReadDeviceCatalog(SGP_DEVICES_JSON);
-  params.neckRules = ReadNeckRules(SGP_NECK_RULES_JSON);
-  return params;
-}
-
-RepairPlan Plan(const AorticPhantom& phantom, const PlanParams& params = DefaultParams())
+RepairPlan Plan(const AorticPhantom& phantom, const PlanParams& params = testing::ShippedPlanParams())
 {
   return PlanRepair(phantom.ct, phantom.truth.seedLps, PlanRequest{}, params);
 }
@@ -118,8 +112,13 @@ void ExpectDeployedAsPlanned(const RepairPlan& plan)
   const GraftLayout& g = plan.graft.layout;
   ASSERT_TRUE(g.configured);
   const DeviceConfiguration& c = *plan.Configuration();
+  double edge = 0.0, length = 0.0, distal = 0.0; // the largest deviations, printed for the record
   for (int side = 0; side < 2; ++side)
-    EXPECT_NEAR(RingPathMm(plan, TrunkSegment, 0, side), 0.0, DeployedMm) << "proximal edge, side " << side;
+  {
+    const double at = RingPathMm(plan, TrunkSegment, 0, side);
+    EXPECT_NEAR(at, 0.0, DeployedMm) << "proximal edge, side " << side;
+    edge = std::max(edge, std::abs(at));
+  }
   for (int index = 0; index < int(g.components.size()); ++index)
   {
     const ConfiguredComponent& part = g.components[std::size_t(index)];
@@ -128,13 +127,17 @@ void ExpectDeployedAsPlanned(const RepairPlan& plan)
     const auto [from, to] = SimulatedExtent(plan, index, side);
     EXPECT_NEAR(to - from, part.item.lengthMm, DeployedMm) << "simulated length";
     EXPECT_NEAR(from, part.proximalMm, DeployedMm);
+    length = std::max({ length, std::abs(to - from - part.item.lengthMm), std::abs(from - part.proximalMm) });
   }
   for (int side = 0; side < 2; ++side)
   {
     const int last = g.mesh.RingsIn(1 + side) - 1;
-    EXPECT_NEAR(RingPathMm(plan, 1 + side, last, side), c.coveredLengthMm[std::size_t(side)], DeployedMm)
-      << "distal edge, side " << side;
+    const double at = RingPathMm(plan, 1 + side, last, side);
+    EXPECT_NEAR(at, c.coveredLengthMm[std::size_t(side)], DeployedMm) << "distal edge, side " << side;
+    distal = std::max(distal, std::abs(at - c.coveredLengthMm[std::size_t(side)]));
   }
+  std::cout << "[ deployed ] largest deviation from the plan: proximal edge " << edge << " mm, component ends "
+            << length << " mm, distal edges " << distal << " mm" << std::endl;
 }
 
 class ConfiguredPhantom : public ::testing::TestWithParam<std::tuple<double, double>>
@@ -161,7 +164,7 @@ TEST_P(ConfiguredPhantom, LimbsLandAboveTheTrueInternalIliacOstium)
   ASSERT_NE(c, nullptr) << plan.selection.summary;
   ASSERT_TRUE(c->configured) << c->unknownReason;
   EXPECT_TRUE(c->findings.empty()) << c->findings.front().text;
-  const DeviceFamily& family = *FindDeviceFamily(DefaultParams().catalog, c->family);
+  const DeviceFamily& family = *FindDeviceFamily(testing::ShippedPlanParams().catalog, c->family);
   const Point3 B = TruthLandmark(phantom, "aorticBifurcation");
   for (int side = 0; side < 2; ++side)
   {
@@ -242,6 +245,12 @@ struct NeckCase
   double neckThrombusMm;
 };
 
+/// Printed by its name in test listings (not as the struct's bytes).
+void PrintTo(const NeckCase& c, std::ostream* os)
+{
+  *os << c.name;
+}
+
 class DeployedGraftPhantom : public ::testing::TestWithParam<NeckCase>
 {
 };
@@ -264,7 +273,7 @@ TEST_P(DeployedGraftPhantom, EdgeAtTheTargetLengthsAsCatalogued)
 
 INSTANTIATE_TEST_SUITE_P(Deployment,
                          DeployedGraftPhantom,
-                         ::testing::Values(NeckCase{ "Straight", 0.0, 1.0, 0.0 },
+                         ::testing::Values(NeckCase{ "StraightThinSlices", 0.0, 0.8, 0.0 },
                                            NeckCase{ "Beta30", 30.0, 1.0, 0.0 },
                                            NeckCase{ "Beta60", 60.0, 1.0, 0.0 },
                                            NeckCase{ "ThickSlices", 0.0, 2.5, 0.0 },
@@ -310,7 +319,9 @@ TEST(Deployment, NeckThrombusNineMillimetresBelowTheSite_SealNineMillimetresType
   // Every vertex the fit check calls sealing lies on healthy wall.
   for (Eigen::Index i = 0; i < plan.fitCheck.sealing.size(); ++i)
     if (plan.fitCheck.sealing[i])
+    {
       ASSERT_NE(plan.fitCheck.healthyWall[i], 0) << "vertex " << i;
+    }
 }
 
 TEST(Deployment, SameNeckWithoutThrombus_SealIsTheNeckLength)
@@ -342,7 +353,7 @@ TEST(Deployment, DemoPhantom_SealNoLongerThanItsNeck)
 TEST(Deployment, LimbOneCatalogueLengthTooLong_CoversTheInternalIliacAndSaysSo)
 {
   const AorticPhantom phantom = GenerateAorticPhantom(WallPhantom());
-  const PlanParams params = DefaultParams();
+  const PlanParams params = testing::ShippedPlanParams();
   const RepairPlan plan = Plan(phantom, params);
   ASSERT_TRUE(plan.HasGraft());
   DeviceConfiguration c = *plan.Configuration();

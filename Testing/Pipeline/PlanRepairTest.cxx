@@ -16,6 +16,7 @@
 #include "CropSupport.h"
 #include "PhantomTestSupport.h"
 #include "PipelineSupport.h"
+#include "ShippedPlanParams.h"
 
 namespace sgp
 {
@@ -25,14 +26,6 @@ namespace
 /// Issue 5's bar for (a)–(f) on 0.8 × 0.8 × 1.0 mm voxels: the fitted ring lies on the segmented
 /// wall, within half a voxel of the analytic wall on each side.
 constexpr double diameterMm = 1.0;
-
-PlanParams DefaultParams()
-{
-  PlanParams params;
-  params.catalog = ReadDeviceCatalog(SGP_DEVICES_JSON);
-  params.neckRules = ReadNeckRules(SGP_NECK_RULES_JSON);
-  return params;
-}
 
 /// The default anatomy with a 1.5 mm wall in fat (0.8 × 0.8 × 1.0 mm, noise 20 HU, renal
 /// arteries): the plan sizes on the outer wall, which needs fat to be seen. Common iliacs 14 mm:
@@ -57,7 +50,8 @@ protected:
     observer.warn = [](const std::string& w) { warned->push_back(w); };
     stages = new std::vector<std::string>;
     warned = new std::vector<std::string>;
-    plan = new RepairPlan(PlanRepair(phantom->ct, phantom->truth.seedLps, PlanRequest{}, DefaultParams(), observer));
+    plan = new RepairPlan(
+      PlanRepair(phantom->ct, phantom->truth.seedLps, PlanRequest{}, testing::ShippedPlanParams(), observer));
   }
   static void TearDownTestSuite()
   {
@@ -112,7 +106,7 @@ TEST_F(DefaultPhantomPlan, Recommendation_EqualsTheOneForTheTruthsSizing)
   anatomy.rightIliacSealLengthMm = truth.rightIliacLength;
   anatomy.leftIliacSealLengthMm = truth.leftIliacLength;
   anatomy.proximalSiteToBifurcationLengthMm = truth.proximalSiteToBifurcationLength;
-  const DeviceSelection expected = SelectDevice(anatomy, DefaultParams().catalog);
+  const DeviceSelection expected = SelectDevice(anatomy, testing::ShippedPlanParams().catalog);
   ASSERT_GE(expected.recommended, 0) << expected.summary;
   ASSERT_GE(plan->selection.recommended, 0) << plan->selection.summary;
   const FamilyEvaluation& want = expected.families[expected.recommended];
@@ -211,7 +205,7 @@ TEST(PlanRepair, NoGraftToSimulate_ValuesUnmeasuredOrAnErrorWhenTheGraftWasAsked
 {
   // An oversizing range no catalogue size reaches (95–100 %): no main body for any family.
   const AorticPhantom phantom = WallPhantom();
-  PlanParams params = DefaultParams();
+  PlanParams params = testing::ShippedPlanParams();
   params.selection.proximalOversizingMinPercent = 95.0;
   params.selection.proximalOversizingMaxPercent = 100.0;
   const RepairPlan plan = PlanRepair(phantom.ct, phantom.truth.seedLps, PlanRequest{}, params);
@@ -259,7 +253,7 @@ TEST_P(PartialPlanOnACutScan, AorticPartMadeIliacValuesUnmeasured)
     if (l.name == "aorticBifurcation")
       bifurcationZ = l.lps.z();
   const CtImage::Pointer ct = testing::CropBelow(*phantom->ct, bifurcationZ - GetParam());
-  const RepairPlan plan = PlanRepair(ct, phantom->truth.seedLps, PlanRequest{}, DefaultParams());
+  const RepairPlan plan = PlanRepair(ct, phantom->truth.seedLps, PlanRequest{}, testing::ShippedPlanParams());
   ASSERT_TRUE(plan.Reached(PlanStage::Device));
   ASSERT_TRUE(plan.centerlines.Partial());
   const Measurements& m = plan.measurements;
@@ -309,7 +303,7 @@ TEST_P(PartialPlanOnACutScan, AorticPartMadeIliacValuesUnmeasured)
   graftRequired.requireSimulatedGraft = true;
   try
   {
-    PlanRepair(ct, phantom->truth.seedLps, graftRequired, DefaultParams());
+    PlanRepair(ct, phantom->truth.seedLps, graftRequired, testing::ShippedPlanParams());
     ADD_FAILURE() << "a graft simulated on a partial plan";
   }
   catch (const AlgorithmError& e)

@@ -16,19 +16,12 @@
 #include "Pipeline/PlanRepair.h"
 #include "Pipeline/PlanValues.h"
 #include "PipelineSupport.h"
+#include "ShippedPlanParams.h"
 
 namespace sgp
 {
 namespace
 {
-
-PlanParams DefaultParams()
-{
-  PlanParams params;
-  params.catalog = ReadDeviceCatalog(SGP_DEVICES_JSON);
-  params.neckRules = ReadNeckRules(SGP_NECK_RULES_JSON);
-  return params;
-}
 
 /// The anatomy with a wall: a 25 mm outer neck, a 1.5 mm wall, an anterior crescent of
 /// sac thrombus 15 mm at its thickest, a 4 mm crescent of neck thrombus reaching from the sac
@@ -81,7 +74,7 @@ TEST_P(WallPlan, OuterDiametersThrombusAndArcs_AgainstTheTruth)
   p.spacingMm = GetParam().spacingMm;
   p.noiseSigmaHu = GetParam().noiseHu;
   const AorticPhantom phantom = GenerateAorticPhantom(p);
-  const RepairPlan plan = PlanRepair(phantom.ct, phantom.truth.seedLps, PlanRequest{}, DefaultParams());
+  const RepairPlan plan = PlanRepair(phantom.ct, phantom.truth.seedLps, PlanRequest{}, testing::ShippedPlanParams());
   ASSERT_TRUE(plan.Reached(PlanStage::Measurements));
   const Measurements& m = plan.measurements;
   const PhantomSizing& truth = phantom.truth.sizing;
@@ -123,7 +116,7 @@ RepairPlan MeasuredWithWallLabels(const AorticPhantom& phantom)
   PlanRequest request;
   request.through = PlanStage::Measurements;
   request.wallLabelMap = true;
-  return PlanRepair(phantom.ct, phantom.truth.seedLps, request, DefaultParams());
+  return PlanRepair(phantom.ct, phantom.truth.seedLps, request, testing::ShippedPlanParams());
 }
 
 /// Voxels of `label` in the truth that the wall label map puts inside the outer wall (≥ 1).
@@ -251,7 +244,7 @@ TEST(VesselWall, WallWithoutThrombus_OuterIsLumenPlusTwoWalls)
   const AorticPhantom phantom = GenerateAorticPhantom(p);
   PlanRequest request;
   request.through = PlanStage::Measurements;
-  const RepairPlan plan = PlanRepair(phantom.ct, phantom.truth.seedLps, request, DefaultParams());
+  const RepairPlan plan = PlanRepair(phantom.ct, phantom.truth.seedLps, request, testing::ShippedPlanParams());
   const Measurements& m = plan.measurements;
   for (const char* name : { "proximalNeckDiameter", "neckDiameter15mm", "maxAneurysmDiameter", "distalNeckMinDiameter",
                             "rightIliacDiameter", "leftIliacDiameter" })
@@ -282,7 +275,7 @@ TEST(VesselWall, OuterNeck25Lumen22_MainBodyOversizedOnTheOuterWall)
   p.wallThicknessMm = 1.5;
   p.tissueHu = -100.0;
   const AorticPhantom phantom = GenerateAorticPhantom(p);
-  const PlanParams params = DefaultParams();
+  const PlanParams params = testing::ShippedPlanParams();
   const RepairPlan plan = PlanRepair(phantom.ct, phantom.truth.seedLps, PlanRequest{}, params);
   ASSERT_GE(plan.selection.recommended, 0) << plan.selection.summary;
   const FamilyEvaluation& chosen = plan.selection.families[plan.selection.recommended];
@@ -320,7 +313,7 @@ TEST(VesselWall, CalcifiedNeck_HostileByItsRuleOnly)
   const AorticPhantom phantom = GenerateAorticPhantom(p);
   PlanRequest request;
   request.through = PlanStage::Measurements;
-  const RepairPlan plan = PlanRepair(phantom.ct, phantom.truth.seedLps, request, DefaultParams());
+  const RepairPlan plan = PlanRepair(phantom.ct, phantom.truth.seedLps, request, testing::ShippedPlanParams());
   EXPECT_NEAR(plan.measurements.Value("neckCalcificationArc"), phantom.truth.sizing.neckCalcificationArcPercent, 10.0);
   EXPECT_TRUE(plan.neck.hostile) << plan.neck.summary;
   for (const CriterionCheck& c : plan.neck.checks)
@@ -349,7 +342,7 @@ TEST_P(NoFatAroundTheVessel, OuterValuesNotMeasured_DeviceSizedOnTheLumenAsAnEst
   // that nothing fails on a measured value.
   p.rightIliacDiameterMm = p.leftIliacDiameterMm = 14.0;
   const AorticPhantom phantom = GenerateAorticPhantom(p);
-  const RepairPlan plan = PlanRepair(phantom.ct, phantom.truth.seedLps, PlanRequest{}, DefaultParams());
+  const RepairPlan plan = PlanRepair(phantom.ct, phantom.truth.seedLps, PlanRequest{}, testing::ShippedPlanParams());
   EXPECT_TRUE(plan.vesselWall.Empty());
   EXPECT_TRUE(std::isnan(plan.measurements.Value("proximalNeckDiameter")));
   EXPECT_TRUE(std::isfinite(plan.measurements.Value("proximalNeckLumenDiameter")));

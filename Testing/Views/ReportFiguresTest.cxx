@@ -20,6 +20,7 @@
 #include "IO/ReportHtml.h"
 #include "Phantom/AorticPhantom.h"
 #include "Pipeline/PlanValues.h"
+#include "Pipeline/ValueText.h"
 #include "Views/ReportFigures.h"
 #include "PhantomTestSupport.h"
 
@@ -184,9 +185,17 @@ TEST_F(DefaultPhantomReport, PageCarriesTheReturnValuesAndNoExternalReference)
 {
   const std::string html = ReportHtml(*plan, *figures, { "phantom.nrrd", "devices.json", "rules.json", "now", "0" });
   for (const PlanValue& v : PlanReturnValues(*plan))
-    if (v.name.find("Diameter") != std::string::npos || v.name == "recommendedDevice")
+    if (v.name == "recommendedDevice")
     {
       EXPECT_NE(html.find("data-name=\"" + v.name + "\">" + v.text + "<"), std::string::npos) << v.name;
+    }
+    else if (v.name.find("Diameter") != std::string::npos)
+    {
+      // The return file's text in data-value, the value at 0.1 mm (ValueText.h) in the cell.
+      const std::string shown = v.measured ? ClinicalText(std::stod(v.text), "mm") : "not measured";
+      EXPECT_NE(html.find("data-name=\"" + v.name + "\" data-value=\"" + v.text + "\">" + shown + "<"),
+                std::string::npos)
+        << v.name << " " << v.text << " shown " << shown;
     }
   // Every src= and href= (attribute names end a word: " src=", " href="); std::regex would recurse
   // through the long data URIs and overflow the stack.
@@ -197,7 +206,7 @@ TEST_F(DefaultPhantomReport, PageCarriesTheReturnValuesAndNoExternalReference)
       ++references;
       EXPECT_EQ(html.compare(at + attribute.size(), 22, "data:image/png;base64,"), 0) << html.substr(at, 80);
     }
-  EXPECT_EQ(references, 2 + 6); // two straightened views, six cross-sections
+  EXPECT_EQ(references, 2 + 6 + 2); // two straightened views, six cross-sections, the graft's two 3-D views
   EXPECT_EQ(html.find("<script"), std::string::npos);
   EXPECT_LT(html.size(), 3u << 20); // the 3 MB
 }

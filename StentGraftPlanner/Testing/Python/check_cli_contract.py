@@ -7,6 +7,8 @@ Usage: check_cli_contract.py MODULE_DIR StentGraftSimulation.xml SyntheticAortic
   carries what is sent (a node role's node class, a string, a comma list, a file path), and the
   points declare coordinateSystem="ras" (the markups' own coordinates);
 - every CLI setting's default equals the XML <default>, and an enumeration offers the same values;
+- every CLI number setting's widget in the .ui offers only values the CLI accepts: its range lies
+  within the XML's <constraints>, and equals it where the widget's decimals can show the bounds;
 - every float setting is sent as text, not as a Python float (slicer.cli would pass it through
   SetParameterAsDouble, which keeps six significant digits);
 - every return value the module reads is an XML return parameter (channel output, no flag), and it
@@ -16,6 +18,8 @@ Usage: check_cli_contract.py MODULE_DIR StentGraftSimulation.xml SyntheticAortic
   "none" where the description does not offer none as a value; its display unit is the XML's; a
   diameter is labelled with the wall its description names (outer wall, lumen, or neither for a
   device size); an XML <boolean> is read as a verdict, with no "not measured" text;
+- every point-data array the module colours a model by is named in that output's XML description,
+  and the simulated graft's ComponentRole codes and their words are the XML's (Appearance);
 - the module's dependencies name none of the extension's CLIs (Slicer's generic module tests run
   with --disable-cli-modules, and a module whose dependency is not loaded is not loaded at all);
 - every parameter StentGraftPlannerTest passes to SyntheticAorticPhantom, and its seedRas return,
@@ -52,6 +56,8 @@ def xmlParameters(path):
                 "flagged": any(element.find(t) is not None for t in ("flag", "longflag", "index")),
                 "elements": [e.text for e in element.findall("element")],
                 "description": " ".join((element.findtext("description") or "").split()),
+                "minimum": element.findtext("constraints/minimum"),
+                "maximum": element.findtext("constraints/maximum"),
             }
     return parameters
 
@@ -114,6 +120,50 @@ def settingDefaultProblems(Settings, declared):
             problems.append("%s: the module's default %r differs from the XML's %r" % (setting.name, setting.default, default))
         if setting.kind == "enum" and parameter["elements"] != list(setting.choices):
             problems.append("%s: the module offers %s, the XML %s" % (setting.name, list(setting.choices), parameter["elements"]))
+    return problems
+
+
+def widgetRangeProblems(Settings, declared, uiText):
+    """A CLI number setting's widget must not offer a value the CLI rejects, nor hide one it accepts
+    where the widget's precision could show it (e.g. deploymentOffsetMm: -30 to 60 mm)."""
+    from check_slicer_module import propertyValue, uiWidgets
+
+    widgets = uiWidgets(uiText)[2]
+    problems = []
+    for setting in Settings.SETTINGS:
+        parameter = declared.get(setting.name) if setting.cli else None
+        widget = widgets.get(setting.widget)
+        if parameter is None or widget is None or setting.kind not in ("float", "int"):
+            continue  # undeclared settings and missing widgets are reported by the other checks
+        decimals = int(propertyValue(widget, "decimals") or (2 if setting.kind == "float" else 0))
+        for bound, qtDefault, inside in (("minimum", 0.0, lambda w, x: w >= x), ("maximum", 99.0, lambda w, x: w <= x)):
+            xmlText = parameter[bound]
+            if xmlText is None:
+                continue
+            xmlValue = float(xmlText)
+            widgetValue = float(propertyValue(widget, bound) or qtDefault)
+            showable = round(xmlValue, decimals) == xmlValue
+            if not inside(widgetValue, xmlValue) or (showable and widgetValue != xmlValue):
+                problems.append("%s: the widget's %s is %g, the XML's %s of %s is %s"
+                                % (setting.widget, bound, widgetValue, bound, setting.name, xmlText))
+    return problems
+
+
+def appearanceProblems(Appearance, declared):
+    """The arrays the module colours models by are the CLI's, and ComponentRole's codes are the XML's."""
+    problems = []
+    for role, look in Appearance.LOOKS.items():
+        if look.scalars and role in declared and not re.search(r"\b%s\b" % re.escape(look.scalars),
+                                                               declared[role]["description"]):
+            problems.append("%s is coloured by %s, which its XML description does not name" % (role, look.scalars))
+    description = (declared.get("outputSimulatedStentModel") or {}).get("description", "")
+    match = re.search(r"ComponentRole \(([^)]*)\)", description)
+    if match is None:
+        return problems + ["the XML's outputSimulatedStentModel names no 'ComponentRole (0 ..., 1 ...)' codes"]
+    codes = [tuple(item.strip().split(" ", 1)) for item in match.group(1).split(",")]
+    expected = [(str(index), role.name) for index, role in enumerate(Appearance.COMPONENT_ROLES)]
+    if codes != expected:
+        problems.append("ComponentRole codes: the XML gives %s, Appearance.COMPONENT_ROLES %s" % (codes, expected))
     return problems
 
 
@@ -247,14 +297,19 @@ def main(moduleDir, simulationXml, phantomXml):
     # A CLI's module name is its XML file's (and executable's) base name.
     cliNames = {os.path.splitext(os.path.basename(path))[0] for path in (simulationXml, phantomXml)}
     sys.path.insert(0, moduleDir)
-    from StentGraftPlannerLib import Results, Settings
+    from StentGraftPlannerLib import Appearance, Results, Settings
 
     declared = xmlParameters(simulationXml)
     with open(os.path.join(moduleDir, "StentGraftPlanner.py")) as f:
         moduleSource = f.read()
+    with open(os.path.join(moduleDir, "Resources", "UI", "StentGraftPlanner.ui")) as f:
+        uiText = f.read()
     checks = [
         ("parameters sent to StentGraftSimulation are declared with fitting types", sentParameterProblems(Settings, declared)),
         ("CLI setting defaults equal the XML defaults", settingDefaultProblems(Settings, declared)),
+        ("CLI number widgets offer the XML's range", widgetRangeProblems(Settings, declared, uiText)),
+        ("models are coloured by arrays the CLI writes, ComponentRole by the XML's codes",
+         appearanceProblems(Appearance, declared)),
         ("return values read are XML return parameters, with 'not measured' read where the XML implies it",
          returnValueProblems(Results, declared)),
         ("computed values name read operands", computedValueProblems(Results)),
@@ -283,6 +338,9 @@ def main(moduleDir, simulationXml, phantomXml):
         "a lumen diameter labelled outer wall": byName["leftIliacLumenDiameter"]._replace(wall="outer"),
         "a device size labelled outer wall": byName["mainBodyDiameter"]._replace(wall="outer"),
         "the hostile-neck verdict read as a number": byName["hostileNeck"]._replace(kind="float", missing="-1"),
+        "the order list's 'none' (no main body) read as missing": byName["orderList"]._replace(missing="none"),
+        "a limb length's -1 (not configured) read as a value": byName["rightLimbLength"]._replace(missing=None),
+        "ifuStatus shown in degrees": byName["ifuStatus"]._replace(kind="float", unit="deg"),
     }
     for what, item in plantedValues.items():
         checks.append(("planted defect, %s, is rejected" % what,
@@ -294,6 +352,26 @@ def main(moduleDir, simulationXml, phantomXml):
                        [] if computedValueProblems(Results) else ["not rejected"]))
     finally:
         Results.DECIDED_FROM = decided
+    offsetMaximum = "<double>60</double>"
+    for what, maximum in (("wider", "<double>100</double>"), ("narrower", "<double>50</double>")):
+        what, text = "a deployment offset widget %s than the XML's range" % what, uiText.replace(offsetMaximum, maximum)
+        planted = widgetRangeProblems(Settings, declared, text) if text != uiText else []
+        checks.append(("planted defect, %s, is rejected" % what, [] if planted else ["not rejected"]))
+    roles = Appearance.COMPONENT_ROLES
+    Appearance.COMPONENT_ROLES = (roles[1], roles[0]) + roles[2:]
+    try:
+        checks.append(("planted defect, two component roles swapped, is rejected",
+                       [] if appearanceProblems(Appearance, declared) else ["not rejected"]))
+    finally:
+        Appearance.COMPONENT_ROLES = roles
+    looks = Appearance.LOOKS
+    Appearance.LOOKS = dict(looks,
+                            outputSimulatedStentModel=looks["outputSimulatedStentModel"]._replace(scalars="Role"))
+    try:
+        checks.append(("planted defect, a model coloured by an array the CLI does not write, is rejected",
+                       [] if appearanceProblems(Appearance, declared) else ["not rejected"]))
+    finally:
+        Appearance.LOOKS = looks
     checks.append(("planted defect, the CLI in the dependencies, is rejected",
                    [] if dependencyProblems(moduleSource.replace("dependencies = []", 'dependencies = ["StentGraftSimulation"]'),
                                             cliNames) else ["not rejected"]))

@@ -1,12 +1,13 @@
 #!/usr/bin/python3
-"""StentGraftPlannerLib.Appearance: every look is a valid colour and opacity, and the plot's vessel
-colours are distinct so the three series can be told apart."""
+"""StentGraftPlannerLib.Appearance: every look is a valid colour and opacity, the plot's vessel
+colours are distinct so the three series can be told apart, and the simulated graft is coloured by
+component in the visual report's colours."""
 import os
 import sys
 import unittest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-from StentGraftPlannerLib import Appearance, Settings  # noqa: E402
+from StentGraftPlannerLib import Appearance, OrderList, Settings  # noqa: E402
 
 
 class AppearanceTest(unittest.TestCase):
@@ -18,7 +19,7 @@ class AppearanceTest(unittest.TestCase):
             self.assertTrue(all(0.0 <= c <= 1.0 for c in look.color), role)
             self.assertTrue(0.0 < look.opacity <= 1.0, role)
             if look.scalars:
-                low, high = look.scalarRangeMm
+                low, high = look.scalarRange
                 self.assertLess(low, high)
 
     def test_EveryShownOutput_HasALook(self):
@@ -55,12 +56,46 @@ class AppearanceTest(unittest.TestCase):
     def test_OuterWallModel_IsColouredByThrombusAndHidden(self):
         look = Appearance.LOOKS["outputOuterWallModel"]
         self.assertEqual(look.scalars, "ThrombusThicknessMm")  # the CLI's point data (XML outputOuterWallModel)
-        self.assertEqual(look.scalarRangeMm[0], 0.0)  # no thrombus at the bottom of the map
-        self.assertGreaterEqual(look.scalarRangeMm[1], 15.0)  # a thick sac thrombus still within the map
+        self.assertEqual(look.scalarRange[0], 0.0)  # no thrombus at the bottom of the map
+        self.assertGreaterEqual(look.scalarRange[1], 15.0)  # a thick sac thrombus still within the map
         self.assertFalse(look.visible)  # the segment shows the outer wall; one translucent shell at a time
         self.assertLess(look.opacity, 0.5)
         for role in ("outputCenterlines", "outputStentModel", "outputSimulatedStentModel", "outputLandmarks"):
             self.assertTrue(Appearance.LOOKS[role].visible, role)
+
+    def test_SimulatedGraft_IsColouredByComponentRole(self):
+        # Issue 30: each component its own colour, by the CLI's ComponentRole point data (codes 0-4).
+        look = Appearance.LOOKS["outputSimulatedStentModel"]
+        self.assertEqual(look.scalars, "ComponentRole")
+        self.assertEqual(look.scalarRange, (0.0, 4.0))
+        self.assertEqual(look.colorTable, Appearance.COMPONENT_COLOR_TABLE)
+        for role in Appearance.LOOKS:
+            if role != "outputSimulatedStentModel":
+                self.assertIsNone(Appearance.LOOKS[role].colorTable, role)  # the others keep the rainbow map
+
+    def test_ComponentColours_AreTheReportsInRoleCodeOrder(self):
+        # The visual report's colours (Logic/Views/SceneMeshes.cxx), entry i = ComponentRole code i.
+        self.assertEqual(Appearance.componentColorTable(), [
+            (0, "main body", (0.15, 0.35, 0.85, 1.0)),
+            (1, "ipsilateral limb", (0.1, 0.65, 0.25, 1.0)),
+            (2, "contralateral limb", (0.95, 0.55, 0.05, 1.0)),
+            (3, "iliac extension", (0.55, 0.25, 0.75, 1.0)),
+            (4, "aortic cuff", (0.0, 0.6, 0.6, 1.0)),
+        ])
+        self.assertEqual(len({role.color for role in Appearance.COMPONENT_ROLES}), 5)  # told apart
+
+    def test_ComponentRoles_MatchTheOrderListsWords(self):
+        # The report's role codes, and the words the order list uses for them.
+        self.assertEqual([role.code for role in Appearance.COMPONENT_ROLES], list(OrderList.ROLE_WORDS))
+        self.assertEqual([role.name for role in Appearance.COMPONENT_ROLES], list(OrderList.ROLE_WORDS.values()))
+
+    def test_ComponentRoleCodes_MapToTheirOwnColourEntry(self):
+        # Slicer's lookup over the scalar range: entry = floor((code - low) / (high - low) * n), clamped to
+        # n - 1 (vtkLookupTable); every integer code must land on its own entry.
+        low, high = Appearance.LOOKS["outputSimulatedStentModel"].scalarRange
+        entries = len(Appearance.componentColorTable())
+        for code in range(entries):
+            self.assertEqual(min(int((code - low) / (high - low) * entries), entries - 1), code)
 
     def test_VesselColours_AreDistinctAndStable(self):
         colours = [Appearance.vesselColor(v) for v in ("aorta", "rightIliac", "leftIliac")]

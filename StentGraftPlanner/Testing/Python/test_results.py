@@ -38,15 +38,23 @@ class ReturnValuesTest(unittest.TestCase):
         given = {item.name: ("-1" if item.kind == "float" else "none") for item in Results.RETURN_VALUES}
         values = Results.readReturnValues(given.get)
         self.assertEqual(values["recommendedDevice"], Results.NO_DEVICE)  # "none" is a verdict here
+        verdicts = ("recommendedDevice", "ipsilateralSideUsed", "orderList")  # "none": no main body (the XML)
+        for name in verdicts[1:]:
+            self.assertEqual(values[name], "none", name)
         for item in Results.RETURN_VALUES:
-            if item.name != "recommendedDevice":
+            if item.name not in verdicts:
                 self.assertIsNone(values[item.name], item.name)
         lines = Results.measurementSummaryLines(values)
         self.assertIn("(e) right iliac diameter, outer wall: not measured", lines)
         self.assertIn("(e) right iliac diameter, lumen: not measured", lines)
         self.assertIn("thrombus volume, proximal site to bifurcation: not measured", lines)
         self.assertIn("hostile neck: not determined", lines)
-        self.assertFalse([line for line in lines if "-1" in line], lines)
+        self.assertIn("main body length: not measured", lines)
+        self.assertIn("main body introduced from: no main body", lines)
+        self.assertIn("order list: no main body", lines)
+        self.assertIn("recommended device: none within its instructions for use", lines)
+        self.assertIn("instructions for use (IFU): not given", lines)  # "none" is not a status
+        self.assertFalse([line for line in lines if "-1" in line or line.endswith(": none")], lines)
 
     def test_NotMeasured_CoversEveryNonNegativeQuantity(self):
         for item in Results.RETURN_VALUES:
@@ -74,7 +82,13 @@ class ReturnValuesTest(unittest.TestCase):
         self.assertEqual(Results.formatValue(22.25, "mm"), "22.2 mm")
         self.assertEqual(Results.formatValue(None, "mm"), "not measured")
         self.assertEqual(Results.formatValue(1.234, ""), "1.23")
+        self.assertEqual(Results.formatValue(1.006, "ratio"), "1.01")
         self.assertEqual(Results.formatValue(61.54, "mL"), "61.5 mL")
+        self.assertEqual(Results.formatValue(34.56, "deg"), "34.6°")  # a symbol, not "deg"
+        self.assertEqual(Results.formatValue(13.5001, "%"), "14 %")  # whole percent
+        self.assertEqual(Results.formatValue(-0.13, "%"), "0 %")  # no "-0 %"
+        self.assertEqual(Results.formatValue(-2.6, "%"), "-3 %")
+        self.assertEqual(Results.formatValue(-0.04, "mm"), "0.0 mm")
         self.assertEqual(Results.formatValue(True, ""), "Yes")
         self.assertEqual(Results.formatValue(False, ""), "No")
         lines = Results.measurementSummaryLines({"proximalNeckDiameter": 25.0, "proximalNeckLumenDiameter": 22.0})
@@ -140,8 +154,8 @@ class WallTest(unittest.TestCase):
         self.assertEqual(shown["thrombus volume, proximal site to bifurcation"], "61.5 mL")
         self.assertEqual(shown["sac volume inside the outer wall"], "140.0 mL")
         self.assertEqual(shown["maximum thrombus thickness"], "14.2 mm")
-        self.assertEqual(shown["neck thrombus arc (thicker than 2 mm)"], "0.0 %")
-        self.assertEqual(shown["neck calcification arc"], "37.5 %")
+        self.assertEqual(shown["neck thrombus arc (thicker than 2 mm)"], "0 %")  # 1 %: clinical precision
+        self.assertEqual(shown["neck calcification arc"], "38 %")
 
 
 class HostileNeckTest(unittest.TestCase):
@@ -321,7 +335,8 @@ class ReportTest(unittest.TestCase):
     def test_MinimalReport_HasEmptySections(self):
         report = Results.parseReport(read("report-minimal.json"))
         self.assertEqual(report, {"proximalSite": None, "measurements": [], "warnings": [], "recommendation": None,
-                                  "families": [], "fitCheck": None, "hostileNeck": None})
+                                  "families": [], "fitCheck": None, "hostileNeck": None, "deployment": None,
+                                  "simulatedFamily": None})
         self.assertEqual(Results.recommendationLines(report), [])
         self.assertEqual(Results.recommendationHtml(report), "The report holds no device recommendation.")
 
@@ -348,8 +363,10 @@ class RecommendationTextTest(unittest.TestCase):
         self.assertIn(("indeterminate", "suprarenal angle alpha not measurable"), lines)
         self.assertIn(("fail", "neck length 12 mm, needs >= 15 mm: -3 mm"), lines)
         self.assertNotIn(("pass", "neck length 25 mm, needs >= 10 mm: +15 mm"), lines)  # passes are counted only
-        self.assertIn(("fail", "ostiaCovered: right renal ostium covered <by> 2 mm"), lines)
-        self.assertIn(("text", "migrationRisk: no"), lines)
+        # A field the panel does not know is listed in words; the known ones as sentences.
+        self.assertIn(("fail", "ostia covered: right renal ostium covered <by> 2 mm"), lines)
+        self.assertIn(("ok", "proximal seal on healthy wall 18.5 mm (needs ≥ 10 mm)"), lines)
+        self.assertIn(("text", "migration risk: no"), lines)
         self.assertEqual(lines[-1], ("warning", "Warning: Active contour hit the iteration limit (3000)."))
 
     def test_NoDevice_AndSiteFromTop_AreFlagged(self):
@@ -388,6 +405,184 @@ class RecommendationTextTest(unittest.TestCase):
         self.assertNotIn("<by>", text)
         self.assertIn('<span style="color:#1a7f37">Recommended: Endurant II', text)
         self.assertIn("<b>Zenith Flex: 0 pass, 1 fail, 0 indeterminate</b>", text)
+
+
+
+class DeploymentReturnValuesTest(unittest.TestCase):
+    """Issue 29's return values: the ordered lengths, the side, the order list and ifuStatus."""
+
+    def test_NewValues_AreReadAndShownInWords(self):
+        given = {"mainBodyLength": "145", "rightLimbLength": "0", "leftLimbLength": "124",
+                 "ipsilateralSideUsed": "right",
+                 "orderList": "Endurant II bifurcated main body 25-16 × 145 mm (ETBF2516C145E)",
+                 "ifuStatus": "indeterminate"}
+        values = Results.readReturnValues(lambda name: given.get(name, ""))
+        self.assertEqual((values["mainBodyLength"], values["rightLimbLength"], values["leftLimbLength"]),
+                         (145.0, 0.0, 124.0))
+        self.assertEqual(values["ipsilateralSideUsed"], "right")
+        shown = {row[0]: row[1] for row in Results.resultsTableRows(values)}
+        self.assertEqual(shown["main body length"], "145.0 mm")
+        self.assertEqual(shown["right limb length"], "no limb: the main body's ipsilateral leg lands on the right")
+        self.assertEqual(shown["left limb length"], "124.0 mm")
+        self.assertEqual(shown["main body introduced from"], "right")
+        self.assertEqual(shown["order list"], "Endurant II bifurcated main body 25-16 × 145 mm (ETBF2516C145E)")
+        self.assertEqual(shown["instructions for use (IFU)"],
+                         "IFU not determined: no criterion failed, but one could not be checked")
+
+    def test_NotConfigured_MinusOneIsNotMeasured_AndEachIfuStatusHasWords(self):
+        given = {"mainBodyLength": "-1", "rightLimbLength": "-1", "leftLimbLength": "-1", "ipsilateralSideUsed": "left",
+                 "orderList": "not configured: the left internal iliac origin was not found", "ifuStatus": "fail"}
+        values = Results.readReturnValues(lambda name: given.get(name, ""))
+        for name in ("mainBodyLength", "rightLimbLength", "leftLimbLength"):
+            self.assertIsNone(values[name], name)
+        shown = {row[0]: row[1] for row in Results.resultsTableRows(values)}
+        self.assertEqual(shown["right limb length"], "not measured")
+        self.assertEqual(shown["order list"], "not configured: the left internal iliac origin was not found")
+        self.assertEqual(shown["instructions for use (IFU)"], "outside IFU: a criterion failed on measured values")
+        byName = {item.name: item for item in Results.RETURN_VALUES}
+        self.assertEqual(Results.formatReturnValue(byName["ifuStatus"], "pass"),
+                         "within IFU: every criterion met on measured values")
+        self.assertEqual(Results.formatReturnValue(byName["ifuStatus"], "odd"), "odd")  # unknown: shown, not hidden
+
+
+class ClinicalPrecisionTest(unittest.TestCase):
+    """Issue 30: the panel shows what the CLI's table shows (its shown column, ValueText.h): real rows of
+    three runs (outer wall, lumen only with estimated values, a landmark not found)."""
+
+    def rows(self):
+        return Results.readCsvRows(read("measurements-shown.csv"))
+
+    def test_FormatValue_EqualsTheTablesShownColumn(self):
+        rows = self.rows()
+        self.assertEqual({row["unit"] for row in rows}, {"mm", "deg", "%", "ratio", "mL"})  # every unit is covered
+        for row in rows:
+            shown = row["shown"]
+            estimated = shown.endswith(" (estimated)")
+            self.assertEqual(estimated, row["estimated"] == "true", row["name"])
+            value = float(row["value"]) if row["value"] else None
+            self.assertEqual(Results.formatValue(value, row["unit"]), shown.replace(" (estimated)", ""), row["name"])
+
+    def test_PanelTable_ShowsTheSameTextAndFlagsTheEstimates(self):
+        rows = self.rows()
+        values = Results.readReturnValues(lambda name: next((r["value"] for r in rows if r["name"] == name), ""))
+        byName = {item.name: item for item in Results.RETURN_VALUES}
+        table = {(row[0], row[2]): row for row in Results.resultsTableRows(values, rows)}
+        checked = set()
+        for row in rows:
+            if row["name"] in Results.COMPUTED_FROM or row["name"] not in byName:
+                continue  # conicity's operand (b) is not a sample row; the fit check's rows are the report's
+            item = byName[row["name"]]
+            checked.add(row["name"])
+            shown = row["shown"].replace(" (estimated)", "")
+            panel = [r for (label, wall), r in table.items() if label == item.label and r[1] == shown]
+            self.assertTrue(panel, (row["name"], shown))
+            if row["estimated"] == "true":
+                self.assertEqual(panel[0][3], "yes", row["name"])
+        self.assertGreaterEqual(len(checked), 9)
+        self.assertIn("mainBodyDiameter", checked)  # an estimated one
+
+
+class IfuStatusTest(unittest.TestCase):
+    """withinIfu is false both for a failed and for an unchecked criterion: the recommendation says which,
+    and "estimated (lumen)" wherever the sizes are estimates."""
+
+    def test_LumenOnly_RecommendationIsIndeterminateAndEstimated(self):
+        lines = Results.recommendationLines(Results.parseReport(read("report-lumen.json")))
+        self.assertEqual(lines[:3], [
+            ("indeterminate",
+             "Recommended: Endurant II, main body 25 mm, right limb 16 mm, left limb 16 mm — estimated (lumen)"),
+            ("indeterminate", "Instructions for use not determined: no criterion failed, but one could not be checked "
+                              "(a value not measured, within its uncertainty, or sized on the lumen)."),
+            ("indeterminate", "Estimated (lumen): sized on the lumen where the outer wall was not traced."),
+        ])
+        self.assertIn(("heading", "Endurant II (IFU not determined, estimated (lumen) at (a), (b), (e), (f)): "
+                                  "2 pass, 0 fail, 2 indeterminate"), lines)
+        self.assertIn(("text", "Order list: Endurant II bifurcated main body 25-16 × 145 mm (ETBF2516C145E); Endurant "
+                               "limb 16 × 82 mm (ETLW1616C082E); Endurant limb 16 × 124 mm (ETLW1616C124E)"), lines)
+
+    def test_Pass_IsOk_AndNoDeviceDoesNotRepeatTheFailure(self):
+        passed = Results.parseReport('{"format": "StentGraftPlanner.report/1", "device": {"recommendation": '
+                                     '{"family": "A", "withinIfu": true, "ifuStatus": "pass", "estimated": null}, '
+                                     '"families": [{"name": "A", "mainBody": {"diameterMm": 25.04}}]}}')
+        self.assertEqual(Results.recommendationLines(passed)[:2], [
+            ("ok", "Recommended: A, main body 25 mm, right limb ? mm, left limb ? mm"),
+            ("ok", "Within its instructions for use: every criterion met on measured values.")])
+        lines = Results.recommendationLines(Results.parseReport(read("report-deployment.json")))
+        self.assertEqual(lines[0], ("fail", "No device of the catalogue is within its instructions for use."))
+        self.assertFalse([text for kind, text in lines if "a criterion failed on measured values" in text])
+        self.assertIn(("heading", "Endurant II (outside IFU): 1 pass, 1 fail, 0 indeterminate"), lines)
+
+    def test_NotConfiguredFamily_SaysWhy(self):
+        lines = Results.recommendationLines(Results.parseReport(read("report-not-configured.json")))
+        self.assertIn(("indeterminate", "Not configured: the left internal iliac origin was not found, so the landing "
+                                        "zone's lower end is not known."), lines)
+
+
+class FitCheckTest(unittest.TestCase):
+    """The fit check as sentences at clinical precision, each seal against its minimum."""
+
+    def test_RealFitCheck_Sentences(self):
+        parsed = Results.parseReport(read("report-deployment.json"))
+        lines = Results.recommendationLines(parsed)
+        start = lines.index(("heading", "Fit check of the simulated graft (Endurant II)"))
+        self.assertEqual(lines[start + 1:start + 12], [
+            ("fail", "The simulated graft does not pass the fit check."),
+            ("ok", "proximal seal on healthy wall 28.0 mm (needs ≥ 10 mm); the seal ends where the aorta widens beyond "
+                   "110 % of (a) under 100 % of the ring (the aneurysm)"),
+            ("text", "shortest apposition length 26.9 mm (the shortest sealed length of the graft's columns from its "
+                     "proximal edge)"),
+            ("text", "calcified share of the proximal seal zone 0 %"),
+            ("fail", "right iliac seal on healthy wall 3.2 mm (needs ≥ 15 mm)"),  # the family's minimum, not 10 mm
+            ("ok", "left iliac seal on healthy wall 47.3 mm (needs ≥ 15 mm)"),
+            ("text", "main body oversizing at the proximal edge 13 %"),
+            ("text", "right limb oversizing in the landing zone 14 %"),
+            ("text", "left limb oversizing in the landing zone 14 %"),
+            ("text", "migration risk: no"),
+            ("ok", "no ostium covered"),
+        ])
+        self.assertEqual(lines[start + 12][0], "fail")
+        self.assertTrue(lines[start + 12][1].startswith("type Ib endoleak risk: right iliac seal 3.2 mm"))
+        self.assertFalse([text for kind, text in lines[start:] if "Mm" in text or "ostia:" in text])  # words only
+
+    def test_EstimatedSeals_PartialPlanAndRisks(self):
+        fitCheck = {"proximalSealLengthMm": 9.25, "sealEstimatedOnLumen": {"proximal": True, "right": False},
+                    "limbsChecked": {"right": True, "left": False}, "rightIliacSealLengthMm": 20.0,
+                    "leftIliacSealLengthMm": None, "migrationRisk": True, "coveredOstia": ["rightRenal"],
+                    "oversizingWall": "outer"}
+        lines = Results.fitCheckLines(fitCheck)
+        self.assertEqual(lines, [
+            ("indeterminate", "The left limb was not sized (the scan ends above its landing zone): its seal, "
+                              "oversizing and internal iliac are not checked."),
+            ("fail", "proximal seal on healthy wall 9.2 mm (needs ≥ 10 mm), estimated (lumen): the outer wall not "
+                     "traced under part of it"),
+            ("text", "right iliac seal on healthy wall 20.0 mm"),  # no family: no minimum to compare with
+            ("fail", "migration risk: the proximal seal is shorter than 10.0 mm"),
+            ("fail", "covers the right renal ostium"),
+            ("text", "oversizing wall: outer"),  # a field the panel does not know, in words
+        ])
+
+    def test_ReportedMinimums_JudgeTheSeals(self):
+        # The report's minimums (issue 30: FitCheck's, the family's iliac one) win over the fallbacks.
+        fitCheck = {"proximalSealLengthMm": 12.0, "minimumProximalSealMm": 15.0, "rightIliacSealLengthMm": 12.0,
+                    "minimumIliacSealMm": 10.0, "migrationRisk": True}
+        lines = Results.fitCheckLines(fitCheck)
+        self.assertEqual(lines, [
+            ("fail", "proximal seal on healthy wall 12.0 mm (needs ≥ 15 mm)"),
+            ("ok", "right iliac seal on healthy wall 12.0 mm (needs ≥ 10 mm)"),
+            ("fail", "migration risk: the proximal seal is shorter than 15.0 mm"),
+        ])
+
+    def test_UnknownFields_InWordsAtTheirUnitsPrecision(self):
+        lines = Results.fitCheckLines({"gapToWallMm": 2.345, "coveredSharePercent": 12.6, "tiltDeg": 3.04,
+                                       "ringCount": 12, "limbGaps": {"rightMm": None, "leftMm": 0.96}})
+        self.assertEqual(lines, [("text", "gap to wall: 2.3 mm"), ("text", "covered share: 13 %"),
+                                 ("text", "tilt: 3.0°"), ("text", "ring count: 12"),
+                                 ("text", "limb gaps right: not measured"), ("text", "limb gaps left: 1.0 mm")])
+
+    def test_ClinicalNumber_RoundsToTheUnitsPrecisionWithoutMinusZero(self):
+        self.assertEqual([Results.clinicalNumber(v, u) for v, u in ((22.06, "mm"), (14.5, "%"), (1.005001, "ratio"),
+                                                                     (-0.4, "%"), (-0.04, "deg"), (7.25, None))],
+                         ["22.1", "14", "1.01", "0", "0.0", "7.2"])
 
 
 if __name__ == "__main__":

@@ -73,6 +73,32 @@ class SchemaTest(unittest.TestCase):
                 self.assertIn(s.default, s.choices, s.name)
 
 
+class DeploymentSettingsTest(unittest.TestCase):
+    """Issue 29: the main body's side and the deployment offset, with the CLI's defaults (the XML's
+    ipsilateralSide and deploymentOffsetMm; check_cli_contract.py compares them and the widget's range
+    with the XML itself)."""
+
+    def test_Defaults_AreTheClis(self):
+        side, offset = Settings.SETTINGS_BY_NAME["ipsilateralSide"], Settings.SETTINGS_BY_NAME["deploymentOffsetMm"]
+        self.assertEqual((side.kind, side.default, side.choices, side.cli),
+                         ("enum", "auto", ("auto", "right", "left"), True))
+        self.assertEqual((offset.kind, offset.default, offset.cli), ("float", 0.0, True))
+        self.assertEqual((side.widget, offset.widget), ("ipsilateralSideComboBox", "deploymentOffsetMmSpinBox"))
+
+    def test_Values_AreSentToTheCliAndSurviveTheParameterNode(self):
+        settings = dict(Settings.defaultSettings(), ipsilateralSide="left", deploymentOffsetMm=-12.5)
+        parameters = Settings.buildCliParameters(settings, allNodes(), ONE_POINT, "/tmp/report.json")
+        self.assertEqual((parameters["ipsilateralSide"], parameters["deploymentOffsetMm"]), ("left", "-12.5"))
+        back, problems = Settings.settingsFromStrings(Settings.settingsToStrings(settings))
+        self.assertEqual((back["ipsilateralSide"], back["deploymentOffsetMm"]), ("left", -12.5))
+        self.assertEqual(problems, [])
+
+    def test_UnknownSide_FallsBackToAuto(self):
+        back, problems = Settings.settingsFromStrings({"ipsilateralSide": "both", "deploymentOffsetMm": "x"})
+        self.assertEqual((back["ipsilateralSide"], back["deploymentOffsetMm"]), ("auto", 0.0))
+        self.assertEqual(len(problems), 2)
+        self.assertTrue(any("'both'" in p and "ipsilateralSide" in p for p in problems), problems)
+
 class DeviceArgumentTest(unittest.TestCase):
     def test_Forms(self):
         self.assertEqual(Settings.deviceArgument("auto", 0), "auto")
