@@ -45,8 +45,10 @@ if [ "$#" -eq 2 ] && [ "$1" = "-LE" ] && [ "$2" = "benchmark" ] || [ "${SGP_SANI
     # PartialPlanOnACutScan, FindAorticSeed's named cases, the CLI tests). Likewise the deployment's
     # phantom series (issues 29 and 30: ten configured and deployed plans, five more anatomies): two
     # of them, the neck thrombus and the limb one length too long, run here and cover the deployment
-    # and the fit check on healthy wall.
-    repeated='^(AutomaticSeed\.|FindAorticSeed\.(RandomAnatomies|EveryTestPhantom)_|RealAnatomy/(AvtAutomaticSeed|AvtCutBelowTheBifurcation)\.|Deployment/|Deployment\.(SameNeck|DemoPhantom|Twelve|TwentySix|Sixteen))'
+    # and the fit check on healthy wall. And three of the four single-neighbour phantoms (the same
+    # wall-stage code beside another organ; the psoas runs here) and the wall plan's thick-slice
+    # variant (its fine-slice twin runs here): 85 s and 48 s each here.
+    repeated='^(AutomaticSeed\.|FindAorticSeed\.(RandomAnatomies|EveryTestPhantom)_|RealAnatomy/(AvtAutomaticSeed|AvtCutBelowTheBifurcation)\.|Deployment/|Deployment\.(SameNeck|DemoPhantom|Twelve|TwentySix|Sixteen)|VesselWall/OneNeighbour\..*/(Ivc|Duodenum|LeftRenalVein)|VesselWall/WallPlan\..*/ThickSlices)'
     ctest --output-on-failure -j 2 -L 'unit|cli' -E "$repeated"
   fi
 fi

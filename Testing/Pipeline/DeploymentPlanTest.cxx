@@ -295,6 +295,14 @@ PhantomParams NeckThrombusNineMillimetresBelowTheSite(bool thrombus)
   return p;
 }
 
+/// Prints the measured seal beside the truth it is judged against (for the notes; the
+/// assertions follow it).
+void PrintSeal(const RepairPlan& plan, double truthMm, const char* truthName)
+{
+  std::cout << "[ seal     ] proximal seal " << plan.fitCheck.proximalSealLengthMm << " mm; " << truthName << " "
+            << truthMm << " mm\n";
+}
+
 TEST(Deployment, NeckThrombusNineMillimetresBelowTheSite_SealNineMillimetresTypeIa)
 {
   const AorticPhantom phantom = GenerateAorticPhantom(NeckThrombusNineMillimetresBelowTheSite(true));
@@ -302,6 +310,7 @@ TEST(Deployment, NeckThrombusNineMillimetresBelowTheSite_SealNineMillimetresType
   ASSERT_NEAR(phantom.truth.sizing.neckThrombusBelowSite, 9.0, 0.2);
   const RepairPlan plan = Plan(phantom);
   ASSERT_TRUE(plan.HasGraft());
+  PrintSeal(plan, phantom.truth.sizing.healthyNeckLength, "healthy neck (truth)");
   const double spacing = StentMeshParams{}.ringSpacingMm;
   // Within the ring spacing of 9 mm (the seal ends between a ring that seals and one that does not).
   EXPECT_NEAR(plan.fitCheck.proximalSealLengthMm, 9.0, spacing);
@@ -329,6 +338,7 @@ TEST(Deployment, SameNeckWithoutThrombus_SealIsTheNeckLength)
   const AorticPhantom phantom = GenerateAorticPhantom(NeckThrombusNineMillimetresBelowTheSite(false));
   const RepairPlan plan = Plan(phantom);
   ASSERT_TRUE(plan.HasGraft());
+  PrintSeal(plan, phantom.truth.sizing.proximalNeckLength, "neck length (truth)");
   // 2 mm: the bar (the neck's end is where the outer wall widens past 110 % of (a), which
   // the seal stops at too; the rings quantize it by half a spacing, the site by 1 mm).
   EXPECT_NEAR(plan.fitCheck.proximalSealLengthMm, phantom.truth.sizing.proximalNeckLength, 2.0);
@@ -345,6 +355,7 @@ TEST(Deployment, DemoPhantom_SealNoLongerThanItsNeck)
   const AorticPhantom phantom = GenerateAorticPhantom(p);
   const RepairPlan plan = Plan(phantom);
   ASSERT_TRUE(plan.HasGraft());
+  PrintSeal(plan, phantom.truth.sizing.proximalNeckLength, "neck length (truth)");
   EXPECT_LE(plan.fitCheck.proximalSealLengthMm,
             phantom.truth.sizing.proximalNeckLength + StentMeshParams{}.ringSpacingMm);
   EXPECT_GE(plan.fitCheck.proximalSealLengthMm, phantom.truth.sizing.proximalNeckLength - 2.0);
