@@ -523,8 +523,7 @@ public:
         }
       Run run{ first, end, 0.5 * (lo + hi), 0.0 };
       for (std::size_t k = first; k < end; ++k)
-        run.radius = std::max({ run.radius,
-                                (m_Segments[k].a - run.centre).norm(),
+        run.radius = std::max({ run.radius, (m_Segments[k].a - run.centre).norm(),
                                 (m_Segments[k].a + m_Segments[k].ab - run.centre).norm() });
       m_Runs.push_back(run);
     }
