@@ -41,8 +41,10 @@ const Prepared& ConfiguredLargePlan()
     r.plan = sgp::PlanRepair(phantom.ct, phantom.truth.seedLps, sgp::PlanRequest{}, r.params);
     if (r.plan.Configuration() == nullptr || !r.plan.HasGraft())
       throw std::runtime_error("the benchmark phantom's plan has no configured graft to deploy");
-    r.measureWall =
-      sgp::WallDistanceField::FromLumen(*r.plan.lumen.mask, 5.0, sgp::StentReach(r.plan.mesh, r.plan.centerlines));
+    // The measure-mode fit's field over the same region as PlanRepair makes it.
+    r.measureWall = sgp::WallDistanceField::FromLumen(
+      *r.plan.lumen.mask, sgp::SharedWallBandMm,
+      sgp::SharedFieldReach(r.plan.mesh, r.plan.centerlines, r.params.deploymentOffsetMm));
     return r;
   }();
   return prepared;
@@ -68,12 +70,11 @@ void BM_DeployGraft_512x512x400(benchmark::State& state)
                                                plan.deploymentTargetAbscissaMm, p.params.mesh);
     vertices = std::size_t(layout.mesh.V.rows());
     // The measure-mode field when it covers the graft's reach, else the graft's own (PlanRepair).
-    const std::vector<sgp::Ball> reach = sgp::StentReach(layout.mesh, plan.centerlines);
     std::optional<sgp::WallDistanceField> own;
-    if (!p.measureWall->Covers(*plan.lumen.mask, 5.0, reach))
-      own = sgp::WallDistanceField::FromLumen(*plan.lumen.mask, 5.0, reach);
+    const sgp::WallDistanceField& wall = sgp::WallDistanceField::SharedOrOwn(
+      *p.measureWall, *plan.lumen.mask, sgp::SharedWallBandMm, sgp::StentReach(layout.mesh, plan.centerlines), own);
     covered = !own;
-    const sgp::DeployedGraft graft = sgp::DeployGraft(std::move(layout), own ? *own : *p.measureWall, p.params.graft);
+    const sgp::DeployedGraft graft = sgp::DeployGraft(std::move(layout), wall, p.params.graft);
     benchmark::DoNotOptimize(sgp::CheckGraftFit(graft, plan.measurements, plan.centerlines, &plan.vesselWall, context));
   }
   state.counters["vertices"] = double(vertices);

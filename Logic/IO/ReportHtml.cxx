@@ -229,11 +229,7 @@ void OrderSection(const RepairPlan& plan, const std::map<std::string, PlanValue>
   out << "</table><table><tr><th>junction</th><th>overlap</th><th>needs</th></tr>";
   for (const ComponentOverlap& o : c->overlaps)
     out << "<tr><td>" << Escape(o.junction) << "</td><td class=\"num\">" << Escape(ClinicalText(o.overlapMm, "mm"))
-        << "</td><td class=\"num\">"
-        << (!std::isfinite(o.maxMm)    ? "≥ " + Num(o.minMm)
-            : o.maxMm - o.minMm < 0.05 ? Num(o.minMm)
-                                       : Num(o.minMm) + " – " + Num(o.maxMm))
-        << " mm</td></tr>";
+        << "</td><td class=\"num\">" << Escape(OverlapNeedsText(o)) << "</td></tr>";
   out << "</table><ul>";
   for (std::size_t i = 1; i < lines.size(); ++i)
     if (lines[i].find("side: covered") != std::string::npos || lines[i].find("FINDING") != std::string::npos ||

@@ -85,14 +85,7 @@ std::vector<std::string> OrderLines(const RepairPlan& plan)
     lines.push_back("  " + RoleWords(part) + ": " + part.OrderText() + ", " + where);
   }
   for (const ComponentOverlap& o : c->overlaps)
-  {
-    // The window the junction allows: [min, max], one number when the stub allows only the
-    // minimum, open above when the catalogue gives no maximum.
-    const std::string needs = !std::isfinite(o.maxMm)    ? "≥ " + Mm(o.minMm)
-                              : o.maxMm - o.minMm < 0.05 ? Mm(o.minMm)
-                                                         : FormatNumber(o.minMm) + "–" + Mm(o.maxMm);
-    lines.push_back("  overlap, " + o.junction + ": " + Mm(o.overlapMm) + " (needs " + needs + ")");
-  }
+    lines.push_back("  overlap, " + o.junction + ": " + Mm(o.overlapMm) + " (needs " + OverlapNeedsText(o) + ")");
   for (int side = 0; side < 2; ++side)
   {
     const double margin = c->marginToInternalIliacMm[side];
@@ -109,6 +102,15 @@ std::vector<std::string> OrderLines(const RepairPlan& plan)
   for (const SizeAlternative& a : c->alternatives)
     lines.push_back("  Alternative: " + a.text + ".");
   return lines;
+}
+
+std::string OverlapNeedsText(const ComponentOverlap& overlap)
+{
+  if (!std::isfinite(overlap.maxMm))
+    return "≥ " + Mm(overlap.minMm);
+  if (overlap.maxMm - overlap.minMm < 0.05) // equal at 0.1 mm
+    return Mm(overlap.minMm);
+  return FormatNumber(overlap.minMm) + "–" + Mm(overlap.maxMm);
 }
 
 } // namespace sgp

@@ -25,4 +25,8 @@ std::string AnatomyLengthsText(const RepairPlan& plan);
 
 std::vector<std::string> OrderLines(const RepairPlan& plan);
 
+/// The window a junction's overlap must lie in: "10.0–20.0 mm", "≥ 10.0 mm" when the catalogue
+/// gives no maximum, one value when the gate's stub allows only the minimum.
+std::string OverlapNeedsText(const ComponentOverlap& overlap);
+
 } // namespace sgp

@@ -24,10 +24,6 @@ namespace sgp
 namespace
 {
 
-/// The shell of the wall distance field around the lumen wall, mm (WallDistanceField.h): the
-/// forces act within it.
-constexpr double WallBandMm = 5.0;
-
 /// The observer, and the plan's warnings list that every warning also goes to.
 class StageReporter
 {
@@ -86,36 +82,6 @@ void ExtractCenterlines(const PlanParams& params, const StageReporter& report, R
   AssignInscribedRadii(plan.centerlines, skeleton);
 }
 
-/// The region of the wall field the fits share: the measure-mode surface's reach (StentReach),
-/// and where the ordered graft goes beyond it — each leg 16 mm further down its iliac (the measured
-/// legs end 5 mm above the internal iliac origin, a planned distal edge at most at its ostium), the
-/// trunk up by a negative deployment offset. A graft that still reaches past it (a limb a length
-/// step over the ostium, the fallback of ConfigureDevice) gets a field of its own.
-std::vector<Ball> SharedFieldReach(const StentMesh& mesh, const CenterlineTree& tree, double deploymentOffsetMm)
-{
-  std::vector<Ball> balls = StentReach(mesh, tree);
-  constexpr double StepMm = 4.0, LegBeyondMm = 16.0;
-  const auto add = [&](const Centerline& c, double s) {
-    balls.push_back({ PositionAt(c, s), 1.5 * RadiusAt(c, s) + 10.0 });
-  };
-  const Centerline* iliac[2] = { &tree.rightIliac, &tree.leftIliac };
-  for (int side = 0; side < 2; ++side)
-  {
-    const std::vector<double>& rings = mesh.ringAbscissaMm[std::size_t(1 + side)];
-    if (rings.empty())
-      continue;
-    for (double s = rings.back() + StepMm; s <= std::min(rings.back() + LegBeyondMm, iliac[side]->LengthMm());
-         s += StepMm)
-      add(*iliac[side], s);
-  }
-  const std::vector<double>& trunk = mesh.ringAbscissaMm[0];
-  if (!trunk.empty())
-    for (double s = trunk.front() - StepMm; s >= std::max(0.0, trunk.front() + deploymentOffsetMm - StepMm);
-         s -= StepMm)
-      add(tree.aorta, s);
-  return balls;
-}
-
 /// The proximal site, the mesh, the wall field and the fit in acmMode; returns the wall field,
 /// which the later fits share.
 WallDistanceField FitStentSurface(const PlanRequest& request,
@@ -134,7 +100,7 @@ WallDistanceField FitStentSurface(const PlanRequest& request,
     meshParams.proximalAbscissaMm = plan.site.abscissaMm;
   plan.mesh = BuildStentMesh(plan.centerlines, meshParams);
   WallDistanceField wall = WallDistanceField::FromLumen(
-    *plan.lumen.mask, WallBandMm, SharedFieldReach(plan.mesh, plan.centerlines, params.deploymentOffsetMm));
+    *plan.lumen.mask, SharedWallBandMm, SharedFieldReach(plan.mesh, plan.centerlines, params.deploymentOffsetMm));
   if (request.initialSurfaceValues)
   {
     const Eigen::Index n = plan.mesh.V.rows();
@@ -367,11 +333,10 @@ void SimulateTheConfiguration(const WallDistanceField& measureWall,
   const int ipsi = configuration.ipsilateralSide;
   if (std::isnan(plan.graftDiametersMm[std::size_t(1 + ipsi)])) // the main body's own leg lands
     plan.graftDiametersMm[std::size_t(1 + ipsi)] = layout.components.front().item.distalDiameterMm;
-  const std::vector<Ball> reach = StentReach(layout.mesh, plan.centerlines);
   std::optional<WallDistanceField> ownWall;
-  if (!measureWall.Covers(*plan.lumen.mask, WallBandMm, reach))
-    ownWall = WallDistanceField::FromLumen(*plan.lumen.mask, WallBandMm, reach);
-  plan.graft = DeployGraft(std::move(layout), ownWall ? *ownWall : measureWall, params.graft, report.Callback());
+  const WallDistanceField& wall = WallDistanceField::SharedOrOwn(measureWall, *plan.lumen.mask, SharedWallBandMm,
+                                                                 StentReach(layout.mesh, plan.centerlines), ownWall);
+  plan.graft = DeployGraft(std::move(layout), wall, params.graft, report.Callback());
   if (!plan.graft.fit.converged)
     report.Warn("The simulated graft did not converge within " + std::to_string(plan.graft.fit.iterations) +
                 " iterations; the surface written is the last one.");

@@ -323,4 +323,29 @@ std::vector<Ball> StentReach(const StentMesh& mesh, const CenterlineTree& tree)
   return balls;
 }
 
+std::vector<Ball> SharedFieldReach(const StentMesh& mesh, const CenterlineTree& tree, double deploymentOffsetMm)
+{
+  std::vector<Ball> balls = StentReach(mesh, tree);
+  constexpr double StepMm = 4.0, LegBeyondMm = 16.0;
+  const auto add = [&](const Centerline& c, double s) {
+    balls.push_back({ PositionAt(c, s), 1.5 * RadiusAt(c, s) + 10.0 });
+  };
+  const Centerline* iliac[2] = { &tree.rightIliac, &tree.leftIliac };
+  for (int side = 0; side < 2; ++side)
+  {
+    const std::vector<double>& rings = mesh.ringAbscissaMm[std::size_t(1 + side)];
+    if (rings.empty())
+      continue;
+    for (double s = rings.back() + StepMm; s <= std::min(rings.back() + LegBeyondMm, iliac[side]->LengthMm());
+         s += StepMm)
+      add(*iliac[side], s);
+  }
+  const std::vector<double>& trunk = mesh.ringAbscissaMm[0];
+  if (!trunk.empty())
+    for (double s = trunk.front() - StepMm; s >= std::max(0.0, trunk.front() + deploymentOffsetMm - StepMm);
+         s -= StepMm)
+      add(tree.aorta, s);
+  return balls;
+}
+
 } // namespace sgp

@@ -129,4 +129,15 @@ StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& para
 /// (the wall field's 5 mm band, two voxels, margin) — the region for WallDistanceField (LPS mm).
 std::vector<Ball> StentReach(const StentMesh& mesh, const CenterlineTree& tree);
 
+/// The band of the wall field the stent fits share (WallDistanceField::FromLumen), mm.
+constexpr double SharedWallBandMm = 5.0;
+
+/// The region of the wall field the measure-mode fit and the deployed graft share: StentReach,
+/// and where the ordered graft goes beyond it — each leg 16 mm further down its iliac (the measured
+/// legs end 5 mm above the internal iliac origin, a planned distal edge at most at its ostium), the
+/// trunk up by a negative deployment offset (mm below the proximal site). A graft that still
+/// reaches past it (a limb a length step over the ostium, the fallback of ConfigureDevice) gets a
+/// field of its own (WallDistanceField::SharedOrOwn).
+std::vector<Ball> SharedFieldReach(const StentMesh& mesh, const CenterlineTree& tree, double deploymentOffsetMm);
+
 } // namespace sgp

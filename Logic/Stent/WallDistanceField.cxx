@@ -209,4 +209,16 @@ bool WallDistanceField::Covers(const LabelImage& lumen, double bandMm, const std
   return true;
 }
 
+const WallDistanceField& WallDistanceField::SharedOrOwn(const WallDistanceField& shared,
+                                                        const LabelImage& lumen,
+                                                        double bandMm,
+                                                        const std::vector<Ball>& region,
+                                                        std::optional<WallDistanceField>& own)
+{
+  if (shared.Covers(lumen, bandMm, region))
+    return shared;
+  own = FromLumen(lumen, bandMm, region);
+  return *own;
+}
+
 } // namespace sgp

@@ -23,6 +23,7 @@
 /// [1, 100] mm.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "Common/Types.h"
@@ -46,6 +47,14 @@ public:
   /// distance over the same voxels, its box only larger (cutting the lumen no closer to the
   /// region). One pass over the lumen's box; no distance is computed.
   bool Covers(const LabelImage& lumen, double bandMm, const std::vector<Ball>& region) const;
+
+  /// `shared` when it Covers(lumen, bandMm, region), else FromLumen(lumen, bandMm, region) made into
+  /// `own` (which the returned reference then points to; `own` must outlive its use).
+  static const WallDistanceField& SharedOrOwn(const WallDistanceField& shared,
+                                              const LabelImage& lumen,
+                                              double bandMm,
+                                              const std::vector<Ball>& region,
+                                              std::optional<WallDistanceField>& own);
 
 private:
   std::array<long, 3> m_Size{};
