@@ -96,8 +96,11 @@ void PrintPlanSummary(const RepairPlan& plan, const std::string& acmMode, std::o
     const char* siteFrom = m.site.source == ProximalSiteSource::Landmark ? "at the landmark given"
                            : m.site.source == ProximalSiteSource::Renal  ? "below the lowest renal artery"
                                                                          : "at the top of the scan";
-    out << "Measurements (proximal site " << siteFrom << ", " << FormatNumber(m.site.abscissaMm)
-        << " mm along the aorta):" << std::endl;
+    if (m.site.Known())
+      out << "Measurements (proximal site " << siteFrom << ", " << FormatNumber(m.site.abscissaMm)
+          << " mm along the aorta):" << std::endl;
+    else
+      out << "Measurements (proximal site not known: no renal artery in view; give --lowestRenalOstium):" << std::endl;
     for (const Measurement& v : m.values)
       out << "  " << ValueLabel(v.name) << ": " << ClinicalText(v.value, v.unit) << std::endl;
   }

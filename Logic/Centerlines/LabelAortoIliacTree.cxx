@@ -1,5 +1,7 @@
 #include "Centerlines/LabelAortoIliacTree.h"
 
+#include "Centerlines/ProximalSite.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -120,6 +122,27 @@ Eigen::Vector3d DirectionOutsideParent(const std::vector<Point3>& branch,
   if (s < reach / 4)
     return fromJunction;
   return (last - branch[start]).normalized();
+}
+
+/// Where around its parent a side branch leaves (step 4): the unit vector from the parent's axis,
+/// perpendicular to it, to the branch's first point at least `outsideParentStartMm` outside the
+/// parent's wall — the side of the aorta the branch lies on as it leaves, whatever its course
+/// then (an SMA that turns down at once runs in front of the aorta: anterior). Zero when the path
+/// never leaves the parent.
+Eigen::Vector3d OffsetOutsideParent(const std::vector<Point3>& branch, const Centerline& parent)
+{
+  for (const Point3& p : branch)
+  {
+    double distance = 0.0;
+    const double s = ProjectOntoCenterline(parent, p, &distance);
+    if (distance - RadiusAt(parent, s) < outsideParentStartMm)
+      continue;
+    const Eigen::Vector3d t = TangentAt(parent, s);
+    const Eigen::Vector3d w = p - PositionAt(parent, s);
+    const Eigen::Vector3d radial = w - w.dot(t) * t;
+    return radial.norm() > 1e-9 ? Eigen::Vector3d(radial.normalized()) : Eigen::Vector3d::Zero();
+  }
+  return Eigen::Vector3d::Zero();
 }
 
 /// Total length of vessel reachable through `edge` from `node` without passing `node` again.
@@ -426,61 +449,124 @@ struct SideBranch
 {
   VesselPath path;
   int node;
-  Eigen::Vector3d direction;
+  Eigen::Vector3d direction; ///< its course as it leaves (DirectionOutsideParent)
   double radius;
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero(); ///< the side it leaves from (OffsetOutsideParent)
 };
+
+/// The side of the aorta a branch leaves from, by its offset's angle in the horizontal plane from
+/// anterior (−y): anterior within anteriorSectorDeg, right or left lateral up to lateralSectorDeg
+/// (renals leave anterolaterally or posterolaterally: 50° in front of lateral to 60° behind it),
+/// else posterior or none (an offset without a horizontal part: unnamed).
+enum class Clock
+{
+  Anterior,
+  Right,
+  Left,
+  Other
+};
+constexpr double anteriorSectorDeg = 40.0, lateralSectorDeg = 150.0;
+
+Clock ClockOf(const Eigen::Vector3d& offset)
+{
+  const double horizontal = std::hypot(offset.x(), offset.y());
+  if (horizontal < 0.5) // leaves mostly up or down along the aorta: no side
+    return Clock::Other;
+  const double fromAnterior = std::atan2(std::abs(offset.x()), -offset.y()) * 57.29577951308232;
+  if (fromAnterior <= anteriorSectorDeg)
+    return Clock::Anterior;
+  if (fromAnterior < lateralSectorDeg)
+    return offset.x() < 0 ? Clock::Right : Clock::Left; // patient right is −x in LPS
+  return Clock::Other;
+}
+
+/// Renal arteries run from horizontal (and up to 0.6 of a unit upward) to 65° downward.
+constexpr double renalSteepestDescentZ = -0.91;
+/// The narrowest renal (median inscribed radius, mm): main renals are 4–7 mm across, accessory
+/// ones 2–4 mm; the lumbar arteries, which also leave laterally and posterolaterally, are
+/// 1.5–2.5 mm across (inscribed radius ≤ 1 mm on the lumen) and are never named renals.
+constexpr double minimumRenalRadiusMm = 1.5, minimumAccessoryRenalRadiusMm = 1.0;
+
+/// The visceral trunks (coeliac, SMA) are the anterior branches at least this share of the widest
+/// anterior branch's radius; the thinner ones (the inferior mesenteric's 3–4 mm against the SMA's
+/// 6–8 mm) are not.
+constexpr double visceralShareOfWidest = 0.7;
 
 /// Names the aorta's side branches by how they leave it (see the header, step 4); unnamed ones
 /// stay empty. `sides` are sorted from the top down; landmarks are appended.
 std::vector<std::string> NameAorticBranches(const SkeletonGraph& graph,
                                             const std::vector<SideBranch>& sides,
                                             const Point3& bifurcation,
+                                            double visceralRadiusMm,
                                             std::vector<Landmark>& landmarks)
 {
   std::vector<std::string> names(sides.size());
   const auto height = [&](const SideBranch& s) { return graph.nodes[s.node].position.z() - bifurcation.z(); };
-  // Anterior: the superior mesenteric and, above it, the coeliac trunk.
+  const auto name = [&](int i, const std::string& vessel)
+  {
+    names[i] = vessel;
+    landmarks.push_back({ vessel + "Ostium", graph.nodes[sides[i].node].position });
+  };
+  // Anterior: the visceral trunks (the SMA, the coeliac above it) by calibre; the thinner ones
+  // are the inferior mesenteric's candidates.
   std::vector<int> anterior;
+  double widestAnterior = 0.0;
   for (int i = 0; i < int(sides.size()); ++i)
-    if (sides[i].direction.y() < -0.6 && height(sides[i]) > 30.0 && height(sides[i]) < 250.0)
+    if (ClockOf(sides[i].offset) == Clock::Anterior && height(sides[i]) > 20.0 && height(sides[i]) < 250.0)
+    {
       anterior.push_back(i); // from the top down
-  double renalCeiling = 180.0;
-  if (!anterior.empty())
+      widestAnterior = std::max(widestAnterior, sides[i].radius);
+    }
+  const double trunkRadius = std::max(visceralRadiusMm, visceralShareOfWidest * widestAnterior);
+  std::vector<int> trunks;
+  for (const int i : anterior)
+    if (sides[i].radius >= trunkRadius && height(sides[i]) > 30.0)
+      trunks.push_back(i);
+  double renalCeiling = MaximumRenalHeightMm;
+  int sma = -1;
+  if (!trunks.empty())
   {
-    names[anterior.back()] = "superiorMesenteric";
-    landmarks.push_back({ "superiorMesentericOstium", graph.nodes[sides[anterior.back()].node].position });
-    renalCeiling = std::min(renalCeiling, height(sides[anterior.back()]) + 15.0); // renals leave below it
+    sma = trunks.back();
+    name(sma, "superiorMesenteric");
+    renalCeiling = std::min(renalCeiling, height(sides[sma]) + 15.0); // renals leave below it
   }
-  if (anterior.size() >= 2)
+  if (trunks.size() >= 2)
+    name(trunks[trunks.size() - 2], "coeliac");
+  // Lateral, between 20 mm above the bifurcation and the superior mesenteric, running out level
+  // to 65° down: the widest on each side is the renal artery, the others accessory renals.
+  double lowestRenal = std::numeric_limits<double>::infinity();
+  for (const Clock side : { Clock::Right, Clock::Left })
   {
-    const int coeliac = anterior[anterior.size() - 2];
-    names[coeliac] = "coeliac";
-    landmarks.push_back({ "coeliacOstium", graph.nodes[sides[coeliac].node].position });
-  }
-  // Lateral, between 20 mm above the bifurcation and the superior mesenteric: the widest on each
-  // side is the renal artery, the others accessory renals.
-  for (const char* sideName : { "right", "left" })
-  {
-    const bool right = std::string(sideName) == "right";
+    const std::string sideName = side == Clock::Right ? "right" : "left";
     int widest = -1;
     for (int i = 0; i < int(sides.size()); ++i)
     {
-      const Eigen::Vector3d d = sides[i].direction;
-      const bool lateral =
-        std::abs(d.x()) >= 0.5 && std::abs(d.x()) >= std::abs(d.y()) && d.z() <= 0.6 && (right ? d.x() < 0 : d.x() > 0);
-      if (names[i].empty() && lateral && height(sides[i]) > 20.0 && height(sides[i]) < renalCeiling)
+      const double z = sides[i].direction.z();
+      if (names[i].empty() && ClockOf(sides[i].offset) == side && z >= renalSteepestDescentZ && z <= 0.6 &&
+          height(sides[i]) > 20.0 && height(sides[i]) < renalCeiling &&
+          sides[i].radius >= minimumAccessoryRenalRadiusMm)
       {
-        names[i] = std::string(sideName) + "AccessoryRenal";
+        names[i] = sideName + "AccessoryRenal";
         if (widest < 0 || sides[i].radius > sides[widest].radius)
           widest = i;
       }
     }
-    if (widest >= 0)
+    if (widest >= 0 && sides[widest].radius >= minimumRenalRadiusMm)
     {
-      names[widest] = std::string(sideName) + "Renal";
-      landmarks.push_back({ std::string(sideName) + "RenalOstium", graph.nodes[sides[widest].node].position });
+      name(widest, sideName + "Renal");
+      lowestRenal = std::min(lowestRenal, height(sides[widest]));
     }
   }
+  // The inferior mesenteric: the widest thinner anterior branch below the SMA and the renals (it
+  // leaves the aorta's front 30–50 mm above the bifurcation, from the sac in an AAA).
+  const double imaCeiling = std::min(sma >= 0 ? height(sides[sma]) - 20.0 : renalCeiling, lowestRenal - 20.0);
+  int ima = -1;
+  for (const int i : anterior)
+    if (names[i].empty() && sides[i].radius < trunkRadius && height(sides[i]) < imaCeiling &&
+        (ima < 0 || sides[i].radius > sides[ima].radius))
+      ima = i;
+  if (ima >= 0)
+    name(ima, "inferiorMesenteric");
   return names;
 }
 
@@ -725,14 +811,33 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
       SideBranch side{ FollowVessel(graph, junction.node, e, mainNodes, reach), junction.node,
                        BranchDirection(graph, e, junction.node, reach), BranchRadius(graph, e, junction.node, reach) };
       side.direction = DirectionOutsideParent(side.path.points, tree.aorta, reach, side.direction);
+      side.offset = OffsetOutsideParent(side.path.points, tree.aorta);
       if (junction.abscissa > topAbscissa + 1e-6)
-        side.direction = Eigen::Vector3d::Zero(); // not abdominal: never a renal or visceral branch
+        side.direction = side.offset = Eigen::Vector3d::Zero(); // not abdominal: never a renal or visceral branch
       aorticSides.push_back(side);
     }
+  // Two side edges whose paths meet again beyond the aorta are one vessel joined to the aorta
+  // twice (a loop of the skeleton where a branch leaves obliquely through a long mouth: a renal
+  // running 60° down showed it): the narrower path is left out, as on the iliacs.
+  const auto beyond = [](const SideBranch& b) { return std::set<int>(b.path.nodes.begin() + 1, b.path.nodes.end()); };
+  std::vector<bool> loop(aorticSides.size(), false);
+  for (std::size_t i = 0; i < aorticSides.size(); ++i)
+    for (std::size_t j = i + 1; j < aorticSides.size(); ++j)
+    {
+      const std::set<int> a = beyond(aorticSides[i]), b = beyond(aorticSides[j]);
+      if (std::any_of(a.begin(), a.end(), [&](int n) { return b.count(n) > 0; }))
+        loop[aorticSides[i].radius < aorticSides[j].radius ? i : j] = true;
+    }
+  std::vector<SideBranch> kept;
+  for (std::size_t i = 0; i < aorticSides.size(); ++i)
+    if (!loop[i])
+      kept.push_back(std::move(aorticSides[i]));
+  aorticSides = std::move(kept);
   std::sort(aorticSides.begin(), aorticSides.end(),
             [&](const SideBranch& a, const SideBranch& b)
             { return graph.nodes[a.node].position.z() > graph.nodes[b.node].position.z(); });
-  std::vector<std::string> names = NameAorticBranches(graph, aorticSides, bifurcation, tree.landmarks);
+  std::vector<std::string> names =
+    NameAorticBranches(graph, aorticSides, bifurcation, params.visceralRadiusMm, tree.landmarks);
   int numbered = 0;
   for (int i = 0; i < int(aorticSides.size()); ++i)
   {

@@ -44,14 +44,27 @@
 ///    radius wide is the internal iliac, and its branching point is the iliac bifurcation. A side
 ///    edge that leads into the other iliac or back into the aorta is a loop of the skeleton (across
 ///    the crotch, where the two lumens merge), not a branch, and is left out.
-/// 4. **Side branches** of the aorta are named by the direction in which they leave it (the chord
-///    of the branch from 1 mm outside the aortic wall, `directionReachMm` long: inside the aorta
-///    the branch's skeleton can run along the aortic axis before it turns out) and their
-///    height above the bifurcation: anterior (y < −0.6) between 30 and 250 mm → the lowest is the
-///    superior mesenteric, the one above it the coeliac trunk; lateral (|x| ≥ 0.5, |x| ≥ |y|,
-///    z ≤ 0.6) between 20 mm and 15 mm above the superior mesenteric (180 mm without it) → the
-///    widest on each side is the renal artery, others accessory renals. Others are numbered from
-///    the top: aorticBranch1, …; on the iliacs rightIliacBranch1, ….
+/// 4. **Side branches** of the aorta are named by the side they leave from, their calibre, their
+///    course and their order (anatomy, not one direction): the *side* is where the branch lies
+///    around the aorta 1 mm outside its wall (the radial offset from the aortic axis: anterior
+///    within 40° of the front, right or left from 50° in front of lateral to 60° behind it, else
+///    unnamed — the
+///    skeleton of a branch runs along the axis inside the aorta, and an SMA that turns down at once
+///    runs in front of it); the *course* is the chord of the branch from 1 mm outside the wall,
+///    `directionReachMm` long. (Two side edges whose paths meet again beyond the aorta are one
+///    branch joined twice — a skeleton loop in a long oblique mouth — and the narrower is left
+///    out.) Anterior branches 30–250 mm above the bifurcation at least
+///    max(`visceralRadiusMm`, 0.7 × the widest anterior one's radius) wide are the visceral trunks:
+///    the lowest is the superior mesenteric, the one above it the coeliac trunk. Lateral branches
+///    between 20 mm above the bifurcation and 15 mm above the superior mesenteric
+///    (MaximumRenalHeightMm without it) whose course runs between 0.6 upward and 65° downward,
+///    at least 1 mm in inscribed radius: the widest on each side, if at least 1.5 mm, is the
+///    renal artery, the others accessory renals (lumbar arteries are thinner). The widest thinner
+///    anterior branch more than 20 mm below the superior mesenteric and the lowest renal (and
+///    20 mm above the bifurcation) is the inferior mesenteric (from the sac's front in an AAA).
+///    Each named branch's ostium is a landmark (`<name>Ostium`). A branch no rule names is not
+///    forced: the others are numbered from the top, aorticBranch1, …; on the iliacs
+///    rightIliacBranch1, ….
 /// 5. Every vessel is smoothed and resampled (SmoothCenterline).
 ///
 /// Input: a SkeletonGraph (LPS mm). Output: a CenterlineTree with landmarks.
@@ -82,7 +95,7 @@ struct CenterlineParams
   double minimumIliacRadiusRatio = 0.25;  ///< iliac radius / aortic radius at the bifurcation
   double internalIliacRadiusRatio = 0.35; ///< internal iliac radius / common iliac radius
   double minimumAortaToIliacRatio = 1.0;  ///< aorta's median radius / each iliac's, whole vessels
-  double visceralRadiusMm = 2.5;          ///< an anterior branch this wide below a Y is visceral, mm
+  double visceralRadiusMm = 2.5;          ///< an anterior branch this wide is visceral (below a Y, a trunk), mm
   /// Most junctions within TangleRadiusMm of one junction before the skeleton is a tangle (a
   /// leak): twice the most a real lumen showed (AVT D3's irregular sac: 50 of its 60; D1, D2,
   /// D4: 6–9); in [1, 100000].

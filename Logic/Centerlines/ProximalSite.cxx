@@ -82,6 +82,63 @@ AxisLine FitAxisLine(const Centerline& parent, double s, double halfWidthMm)
   return line;
 }
 
+/// No renal artery and no point (the file comment, sources 3 and 4): the top of the aorta where
+/// the aorta in view reaches no higher than MaximumRenalHeightMm above its bifurcation (its last
+/// point) and passes over no arch; else the site is not known.
+void PlaceWithoutRenals(const CenterlineTree& tree, ProximalSite& site)
+{
+  const Centerline& aorta = tree.aorta;
+  const Point3 top = aorta.points.row(0).transpose();
+  const Point3 bifurcation = aorta.points.row(aorta.Size() - 1).transpose();
+  const double topHeight = top.z() - bifurcation.z();
+  const bool arch = tree.FindVessel("ascendingAorta") != nullptr;
+  std::string extent;
+  bool cut = false;
+  if (std::isfinite(tree.scanHighestZMm))
+  {
+    // The aorta's top within its radius (and a voxel or two) of the scan's superior border:
+    // the scan is cut there, and the renal arteries may lie above it.
+    cut = tree.scanHighestZMm - top.z() <= aorta.radiusMm[0] + 3.0;
+    extent = " The scan spans z " + FormatNumber(tree.scanLowestZMm, 1) + " to " +
+             FormatNumber(tree.scanHighestZMm, 1) + " mm (LPS, inferior to superior); the aorta " +
+             (cut ? "runs out of its superior border" : "ends inside it") + " at z " + FormatNumber(top.z(), 1) +
+             " mm, " + FormatNumber(aorta.LengthMm(), 0) + " mm of centerline above the bifurcation.";
+  }
+  if (!arch && topHeight <= MaximumRenalHeightMm)
+  {
+    site.source = ProximalSiteSource::Top;
+    site.abscissaMm = 0.0;
+    site.warning =
+      "No renal artery was found on the aortic centerline and --lowestRenalOstium was not given; the "
+      "aorta in view reaches " +
+      FormatNumber(topHeight, 1) + " mm above its bifurcation (at most " + FormatNumber(MaximumRenalHeightMm, 0) +
+      " mm, as high as renal arteries are looked for), so the scan is taken to start near the renal "
+      "level: the proximal implantation site is the top of the aortic centerline (" +
+      FormatPoint(top) + " mm LPS), and the neck values are measured from there." + extent +
+      (cut ? " A scan that begins below the renal arteries shows none." : "") + " Place the lowestRenalOstium point.";
+    return;
+  }
+  // The aorta goes on past the renal level (into the chest): its top is not the site. The stent
+  // surface starts MaximumRenalHeightMm above the bifurcation, on the abdominal aorta.
+  site.source = ProximalSiteSource::None;
+  site.abscissaMm = 0.0;
+  for (Eigen::Index i = 0; i < aorta.Size(); ++i)
+    if (aorta.points(i, 2) - bifurcation.z() <= MaximumRenalHeightMm)
+    {
+      site.abscissaMm = aorta.abscissaMm[i];
+      break;
+    }
+  site.warning = "No renal artery was found on the aortic centerline and --lowestRenalOstium was not given, and the "
+                 "aorta in view " +
+                 std::string(arch ? "runs over the arch into the chest"
+                                  : "reaches " + FormatNumber(topHeight, 1) + " mm above its bifurcation") +
+                 ", past where renal arteries leave (at most " + FormatNumber(MaximumRenalHeightMm, 0) +
+                 " mm above it): the proximal implantation site is not known, so the neck values (a), (b), the neck "
+                 "length and angles, the site-to-bifurcation length and the deployment target are not measured, and "
+                 "no graft is simulated." +
+                 extent + " Place the lowestRenalOstium point at the lower edge of the lowest renal artery's ostium.";
+}
+
 } // namespace
 
 BranchOstium FindBranchOstium(const Centerline& parent, const Centerline& branch)
@@ -150,6 +207,8 @@ const char* ToString(ProximalSiteSource source)
       return "landmark";
     case ProximalSiteSource::Renal:
       return "renal";
+    case ProximalSiteSource::None:
+      return "notFound";
     case ProximalSiteSource::Top:
       break;
   }
@@ -201,27 +260,7 @@ ProximalSite FindProximalSite(const CenterlineTree& tree, const std::optional<Po
       site.abscissaMm = std::min(lowest, aorta.LengthMm());
     }
     else
-    {
-      site.source = ProximalSiteSource::Top;
-      site.abscissaMm = 0.0;
-      const Point3 top = aorta.points.row(0).transpose();
-      std::string extent;
-      if (std::isfinite(tree.scanHighestZMm))
-      {
-        // The aorta's top within its radius (and a voxel or two) of the scan's superior border:
-        // the scan is cut there, and the renal arteries may lie above it.
-        const bool cut = tree.scanHighestZMm - top.z() <= aorta.radiusMm[0] + 3.0;
-        extent = " The scan spans z " + FormatNumber(tree.scanLowestZMm, 1) + " to " +
-                 FormatNumber(tree.scanHighestZMm, 1) + " mm (LPS, inferior to superior); the aorta " +
-                 (cut ? "runs out of its superior border" : "ends inside it") + " at z " + FormatNumber(top.z(), 1) +
-                 " mm, " + FormatNumber(aorta.LengthMm(), 0) + " mm of centerline above the bifurcation" +
-                 (cut ? " (a scan that begins below the renal arteries shows none)." : ".");
-      }
-      site.warning = "No renal artery was found on the aortic centerline and --lowestRenalOstium was not given; "
-                     "the proximal implantation site is the top of the aortic centerline (" +
-                     FormatPoint(top) + " mm LPS), so the neck values are measured from there." + extent +
-                     " Place the lowestRenalOstium point.";
-    }
+      PlaceWithoutRenals(tree, site);
   }
   site.lps = PositionAt(aorta, site.abscissaMm);
   return site;

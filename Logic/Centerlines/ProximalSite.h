@@ -16,7 +16,17 @@
 ///     lies ρ / sin φ further down (ρ: the renal's median inscribed radius there; φ: the angle
 ///     between the renal's axis and the aorta, clamped to ≥ 30°) — the point where the renal's
 ///     downstream wall line meets the aortic wall. The lowest of the renals is the site;
-///  3. **top** — neither available: the top of the aortic centerline, with a warning.
+///  3. **top** — neither available, and the aorta in view reaches no higher than
+///     MaximumRenalHeightMm above its bifurcation (the scan starts near the renal level, so the
+///     renals may lie just above it): the top of the aortic centerline, with a warning that says so;
+///  4. **notFound** (ProximalSiteSource::None) — neither available, and the aorta in view reaches past where renal
+///  arteries leave
+///     (its top more than MaximumRenalHeightMm above the bifurcation, or over an arch into the
+///     chest): the site is **not known**. The neck values measured from it are not measured
+///     (MeasureAnatomy.h), no deployment target is set, and the warning asks for the
+///     `lowestRenalOstium` point. `abscissaMm` is then only where the measure-mode stent surface
+///     starts: the aorta MaximumRenalHeightMm above the bifurcation (its top where lower), so
+///     that (c), (d) and the iliac values are read on the abdominal aorta, never in the chest.
 ///
 /// Input: the labelled CenterlineTree (LPS mm) and optionally the user's point (LPS mm).
 /// Output: ProximalSite (below), abscissa along `tree.aorta` from its top, mm.
@@ -36,10 +46,18 @@ enum class ProximalSiteSource
 {
   Landmark,
   Renal,
-  Top
+  Top,
+  None
 };
 
-/// "landmark", "renal" or "top".
+/// How high above the aortic bifurcation a renal artery is looked for (LabelAortoIliacTree.h,
+/// step 4) and so the highest a scan's top may lie for its top to stand in for the renal level,
+/// mm (along z). One bound for both: a scan whose aorta reaches higher than renals are looked for
+/// has passed the renal level, so its top is not a stand-in for it.
+constexpr double MaximumRenalHeightMm = 180.0;
+
+/// "landmark", "renal", "top" or "notFound" (not "none": a text return value not measured is
+/// "none", PlanValues.h).
 const char* ToString(ProximalSiteSource source);
 
 struct ProximalSite
@@ -49,7 +67,9 @@ struct ProximalSite
   Point3 lps = Point3::Zero(); ///< the aortic centerline point there, LPS mm
   std::string renal;           ///< the renal that defines it (source Renal), else empty
   double renalRadiusMm = 0.0;  ///< that renal's radius at its ostium (source Renal), mm
-  std::string warning;         ///< non-empty for source Top (what was used and why)
+  std::string warning;         ///< non-empty for sources Top and None (what was used and why)
+  /// False for source None: the site is not known, and nothing is measured from it.
+  bool Known() const { return source != ProximalSiteSource::None; }
 };
 
 /// Where a side branch opens from its parent vessel, as arc lengths along the parent's

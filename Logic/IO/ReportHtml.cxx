@@ -104,9 +104,14 @@ void Header(const RepairPlan& plan, const ReportRun& run, std::ostream& out)
       << (plan.seedAutomatic ? "found automatically: " + Escape(plan.seedDescription)
                              : std::string("given by the user"))
       << "</td></tr>"
-      << "<tr><td>Proximal site</td><td>" << Num(site.abscissaMm) << " mm along the aorta from its top in the scan, "
-      << "LPS " << FormatPoint(site.lps) << " mm; source: " << ToString(site.source)
-      << (site.renal.empty() ? "" : " (lower edge of the " + Escape(site.renal) + " ostium)") << "</td></tr>"
+      << "<tr><td>Proximal site</td><td>"
+      << (site.Known() ? Num(site.abscissaMm) + " mm along the aorta from its top in the scan, LPS " +
+                           FormatPoint(site.lps) + " mm; source: " + ToString(site.source) +
+                           (site.renal.empty() ? "" : " (lower edge of the " + Escape(site.renal) + " ostium)")
+                       : std::string("<b>not known</b>: no renal artery in view and the aorta runs on past the "
+                                     "renal level, so the neck values and the deployment target are not measured. "
+                                     "Place the lowest-renal point (lowestRenalOstium) and run again."))
+      << "</td></tr>"
       << "<tr><td>Catalogue</td><td>" << Escape(run.deviceCatalog)
       << " (public defaults: verify against the current instructions for use)</td></tr></table>\n";
 }

@@ -84,10 +84,13 @@ nlohmann::json MeasurementsToJson(const Measurements& measurements)
 {
   nlohmann::json out;
   const ProximalSite& site = measurements.site;
+  // Not known (source notFound): no position; where the measure-mode surface started instead.
   out["proximalSite"] = { { "source", ToString(site.source) },
-                          { "abscissaMm", site.abscissaMm },
-                          { "lps", JsonPoint(site.lps) },
+                          { "abscissaMm", site.Known() ? nlohmann::json(site.abscissaMm) : nlohmann::json(nullptr) },
+                          { "lps", site.Known() ? JsonPoint(site.lps) : nlohmann::json(nullptr) },
                           { "renal", site.renal } };
+  if (!site.Known())
+    out["proximalSite"]["surfaceStartAbscissaMm"] = site.abscissaMm;
   out["aorticBifurcation"] = { { "lps", JsonPoint(measurements.bifurcationLps) },
                                { "abscissaMm", measurements.bifurcationAbscissaMm } };
   for (int side = 0; side < 2; ++side)

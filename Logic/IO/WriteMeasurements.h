@@ -33,7 +33,8 @@ std::string FormatDiameterProfiles(const Measurements& measurements);
 void WriteMeasurementsTable(const std::vector<Measurement>& rows, const std::string& path);
 void WriteDiameterProfiles(const Measurements& measurements, const std::string& path);
 
-/// {"proximalSite": {"source", "abscissaMm", "lps", "renal"}, "aorticBifurcation": {"lps",
+/// {"proximalSite": {"source", "abscissaMm", "lps", "renal"} (source "notFound": abscissaMm and lps
+/// null, and "surfaceStartAbscissaMm" where the measure-mode surface began), "aorticBifurcation": {"lps",
 /// "abscissaMm"}, "measurements": [{"name", "value" (null when not measured), "unit",
 /// "definition", "vessel", "abscissaMm", and for diameters "minDiameterMm", "maxDiameterMm",
 /// "areaDiameterMm"}], "diameterProfiles": {vessel: [[abscissaMm, mean, min, max, area], …]},

@@ -338,6 +338,42 @@ void LeaveOutWhatTheScanDoesNotHold(const MeasureContext& c, Measurements& out)
   }
 }
 
+/// The site not known (ProximalSiteSource::None): every value measured from it is NaN — the neck's
+/// diameters, length, angles and conicity, the site-to-bifurcation length, and the thrombus and
+/// sac volumes and neck arcs that run from it — with one warning naming them. (c), (d) and the
+/// iliac values stay: the stent surface they are read on starts on the abdominal aorta.
+void LeaveOutWhatNeedsTheSite(const MeasureContext& c, Measurements& out)
+{
+  if (c.site.Known())
+    return;
+  static const char* const names[] = { "proximalNeckLumenDiameter",
+                                       "neckLumenDiameter15mm",
+                                       "proximalNeckDiameter",
+                                       "neckDiameter15mm",
+                                       "proximalNeckLength",
+                                       "proximalSiteToBifurcationLength",
+                                       "neckAngleBeta",
+                                       "neckAngleAlpha",
+                                       "neckConicity",
+                                       "thrombusVolume",
+                                       "sacVolume",
+                                       "neckThrombusArc",
+                                       "neckCalcificationArc" };
+  std::string list;
+  for (Measurement& m : out.values)
+    if (std::find(std::begin(names), std::end(names), m.name) != std::end(names))
+    {
+      m.value = m.minMm = m.maxMm = m.areaMm = nan;
+      list += (list.empty() ? "" : ", ") + m.name;
+    }
+  out.outerNeckEndMm = nan;
+  out.reverseTaperMm = { nan, nan };
+  out.warnings.push_back("The proximal implantation site is not known (no renal artery in view, no lowestRenalOstium "
+                         "point): " +
+                         list + " are not measured; (c), (d) and the iliac values are read below " +
+                         FormatNumber(c.sBif - c.sSite, 0) + " mm above the aortic bifurcation along the aorta.");
+}
+
 } // namespace
 
 const Measurement* Measurements::Find(const std::string& name) const
@@ -414,6 +450,7 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
   MeasureNeckAngles(c, sNeckEnd, a, b, out);
   MeasureIliacAccess(c, iliacOffset, out);
   LeaveOutWhatTheScanDoesNotHold(c, out);
+  LeaveOutWhatNeedsTheSite(c, out);
   return out;
 }
 

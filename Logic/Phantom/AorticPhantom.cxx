@@ -24,6 +24,10 @@ constexpr double pi = 3.14159265358979323846;
 constexpr double renalRadiusMm = 3.0;
 constexpr double renalHilumLateralMm = 64.0, renalHilumPosteriorMm = 10.0; ///< from the renal's origin
 constexpr double visceralRadiusMm = 3.5;
+constexpr double accessoryRenalRadiusMm = 2.0;
+constexpr double imaRadiusMm = 1.75;
+constexpr double renalBranchRadiusMm = 2.2;
+constexpr double renalBranchTurnDeg = 25.0;
 constexpr double distalNeckLengthMm = 20.0;
 constexpr double commonIliacAngleDeg = 25.0;
 constexpr double vertebraRadiusMm = 20.0;
@@ -136,6 +140,46 @@ double OstiumLowerEdgeDepthMm(double R, double rho, const Eigen::Vector3d& d, co
   return -lowest;
 }
 
+/// A renal artery from `origin` (on the aortic axis) toward `hilum`: whole, cut `renalStubMm`
+/// outside the aortic lumen (radius `aorticRadius`), or dividing `renalDivisionMm` outside it into
+/// an upper and a lower branch turned ±renalBranchTurnDeg in the vertical plane of its course.
+void AddRenal(Anatomy& anatomy,
+              const std::string& name,
+              const Point3& origin,
+              const Point3& hilum,
+              double radius,
+              double aorticRadius,
+              const PhantomParams& p)
+{
+  const Eigen::Vector3d d = (hilum - origin).normalized();
+  // Along the course, the lumen's wall lies where the horizontal distance reaches the aortic radius.
+  const double horizontal = std::hypot(d.x(), d.y());
+  const double toWall = aorticRadius / std::max(horizontal, 1e-6);
+  if (p.renalStubMm > 0.0)
+  {
+    anatomy.tubes.push_back(StraightTube(name, { origin, origin + (toWall + p.renalStubMm) * d }, radius));
+    return;
+  }
+  if (p.renalDivisionMm > 0.0)
+  {
+    const Point3 division = origin + (toWall + p.renalDivisionMm) * d;
+    const double rest = (hilum - division).norm();
+    // The vertical plane of the course: its horizontal part and z.
+    const Eigen::Vector3d h = Eigen::Vector3d(d.x(), d.y(), 0.0).normalized();
+    const double angle = std::atan2(d.z(), horizontal), turn = renalBranchTurnDeg * pi / 180.0;
+    anatomy.tubes.push_back(StraightTube(name, { origin, division }, radius));
+    for (const double sign : { 1.0, -1.0 })
+    {
+      const double a = angle + sign * turn;
+      const Eigen::Vector3d b = std::cos(a) * h + Eigen::Vector3d(0.0, 0.0, std::sin(a));
+      anatomy.tubes.push_back(
+        StraightTube(name + (sign > 0 ? "Upper" : "Lower"), { division, division + rest * b }, renalBranchRadiusMm));
+    }
+    return;
+  }
+  anatomy.tubes.push_back(StraightTube(name, { origin, hilum }, radius));
+}
+
 Anatomy BuildAnatomy(const PhantomParams& p)
 {
   Anatomy anatomy;
@@ -143,7 +187,7 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   const double rNeck = p.neckDiameterMm / 2, rDistal = p.distalNeckDiameterMm / 2;
   const double sacBottom = distalNeckLengthMm, sacTop = sacBottom + p.aneurysmLengthMm;
   const double siteZ = sacTop + p.neckLengthMm; // lower edge of the lowest (right) renal ostium
-  const double smaZ = siteZ + 20.0, coeliacZ = siteZ + 35.0, topZ = siteZ + 80.0;
+  const double smaZ = siteZ + 20.0, coeliacZ = siteZ + 35.0, topZ = siteZ + p.aortaAboveSiteMm;
   const double amplitude = p.maxAneurysmDiameterMm / 2 - 0.5 * (rNeck + rDistal);
   const auto radiusAtZ = [=](double z)
   {
@@ -178,7 +222,18 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   const AorticWall* wall = anatomy.wall.get();
   // The renals run horizontally to their hila; the right one leaves the neck's axis so that its
   // ostium's lowest point on the lumen's wall is at the site.
-  const Eigen::Vector3d rightRenalDirection = Point3(-renalHilumLateralMm, renalHilumPosteriorMm, 0.0).normalized();
+  // A variant's renal is turned by the takeoff angle about the vertical (anterior: toward −y) and
+  // tilted down by the descent; at 0° both are the exact identity.
+  const double takeoff = p.renalTakeoffDeg * pi / 180.0, descent = p.renalDescentDeg * pi / 180.0;
+  const auto renalCourse = [=](double lateral)
+  {
+    const Point3 h(lateral * renalHilumLateralMm, renalHilumPosteriorMm, 0.0);
+    const double turn = -lateral * takeoff; // rotates the right (−x) and the left (+x) renal toward −y
+    const Point3 turned(h.x() * std::cos(turn) - h.y() * std::sin(turn),
+                        h.x() * std::sin(turn) + h.y() * std::cos(turn), 0.0);
+    return Point3(std::cos(descent) * turned + Point3(0.0, 0.0, -std::sin(descent) * turned.norm()));
+  };
+  const Eigen::Vector3d rightRenalDirection = renalCourse(-1.0).normalized();
   const double siteLumenRadius = wall ? wall->LumenRadius(siteZ) : rNeck;
   const double rightRenalZ =
     siteZ + OstiumLowerEdgeDepthMm(siteLumenRadius, renalRadiusMm, rightRenalDirection, neckDirection);
@@ -235,8 +290,9 @@ Anatomy BuildAnatomy(const PhantomParams& p)
       anatomy.wallTubes.push_back(StraightTube(prefix + "InternalIliacWall", internal, 0.55 * r));
     }
     const double renalZ = side == 0 ? rightRenalZ : leftRenalZ;
-    const Point3 hilum = onAxis(renalZ) + Point3(lateral * renalHilumLateralMm, renalHilumPosteriorMm, 0.0);
-    anatomy.tubes.push_back(StraightTube(prefix + "Renal", { onAxis(renalZ), hilum }, renalRadiusMm));
+    const Point3 hilum = onAxis(renalZ) + renalCourse(lateral);
+    if (p.includeRenals)
+      AddRenal(anatomy, prefix + "Renal", onAxis(renalZ), hilum, renalRadiusMm, siteLumenRadius, p);
     if (p.includeKidneys)
     {
       anatomy.kidneys.push_back({ onAxis(renalZ) + Point3(lateral * 80.0, 15.0, -10.0), Point3(22.0, 18.0, 50.0) });
@@ -244,9 +300,31 @@ Anatomy BuildAnatomy(const PhantomParams& p)
     truth.landmarks.push_back({ prefix + "RenalOstium", onAxis(renalZ) + Point3(lateral * rNeck, 0, 0) });
     truth.landmarks.push_back({ prefix + "IliacBifurcation", iliacEnd[side] });
   }
-  anatomy.tubes.push_back(StraightTube(
-    "superiorMesenteric", { onAxis(smaZ), onAxis(smaZ) + Point3(0, -35, -5), onAxis(smaZ) + Point3(0, -45, -60) },
-    visceralRadiusMm));
+  if (p.accessoryRenalOffsetMm != 0.0)
+  {
+    const double z = rightRenalZ + p.accessoryRenalOffsetMm;
+    anatomy.tubes.push_back(
+      StraightTube("rightAccessoryRenal", { onAxis(z), onAxis(z) + Point3(-55.0, 5.0, 0.0) }, accessoryRenalRadiusMm));
+  }
+  if (p.parallelSuperiorMesenteric) // leaves forward, turns down within 10 mm, 5 mm of tissue from the aorta
+    anatomy.tubes.push_back(StraightTube("superiorMesenteric",
+                                         { onAxis(smaZ), onAxis(smaZ) + Point3(0, -(rNeck + 9.0), -6.0),
+                                           onAxis(smaZ) + Point3(0, -(rNeck + 10.0), -30.0),
+                                           onAxis(smaZ) + Point3(0, -(rNeck + 30.0), -70.0) },
+                                         visceralRadiusMm));
+  else
+    anatomy.tubes.push_back(StraightTube(
+      "superiorMesenteric", { onAxis(smaZ), onAxis(smaZ) + Point3(0, -35, -5), onAxis(smaZ) + Point3(0, -45, -60) },
+      visceralRadiusMm));
+  if (p.includeInferiorMesenteric) // from the sac's front at a third of its height, down and to the left
+  {
+    const double z = sacBottom + (sacTop - sacBottom) / 3.0;
+    const double front = radiusAtZ(z);
+    anatomy.tubes.push_back(StraightTube(
+      "inferiorMesenteric",
+      { Point3(0, 0, z), Point3(0, -front - 8.0, z - 6.0), Point3(25.0, -front - 12.0, z - 60.0) }, imaRadiusMm));
+    truth.landmarks.push_back({ "inferiorMesentericOstium", Point3(0, -front, z) });
+  }
   anatomy.tubes.push_back(
     StraightTube("coeliac", { onAxis(coeliacZ), onAxis(coeliacZ) + Point3(0, -30, 5) }, visceralRadiusMm));
   if (p.includeBone)
@@ -708,6 +786,15 @@ void ValidatePhantomParams(const PhantomParams& p)
   check("duodenumHu", p.duodenumHu, -200, 400, "HU");
   check("leftRenalVeinHu", p.leftRenalVeinHu, -200, 400, "HU");
   check("bolusGradientHuPerCm", p.bolusGradientHuPerCm, -10, 10, "HU/cm");
+  check("aortaAboveSiteMm", p.aortaAboveSiteMm, 20, 400, "mm");
+  check("renalDescentDeg", p.renalDescentDeg, 0, 65, "degrees");
+  check("renalTakeoffDeg", p.renalTakeoffDeg, -60, 60, "degrees");
+  check("renalStubMm", p.renalStubMm, 0, 60, "mm");
+  check("renalDivisionMm", p.renalDivisionMm, 0, 40, "mm");
+  check("accessoryRenalOffsetMm", p.accessoryRenalOffsetMm, -40, 40, "mm");
+  if (p.accessoryRenalOffsetMm != 0.0 && std::abs(p.accessoryRenalOffsetMm) < 8.0)
+    throw InputError("accessoryRenalOffsetMm is " + FormatNumber(p.accessoryRenalOffsetMm) +
+                     " mm; expected 0 (none) or at least 8 mm above or below the right renal.");
   const bool needsWall = p.thrombusMaxThicknessMm > 0 || p.neckThrombusThicknessMm > 0 ||
                          p.sacCalcificationArcDeg > 0 || p.neckCalcificationArcDeg > 0 || p.includePsoas ||
                          p.includeIvc || p.includeDuodenum || p.includeLeftRenalVein;

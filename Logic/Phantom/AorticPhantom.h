@@ -119,6 +119,24 @@ struct PhantomParams
   bool includeLeftRenalVein = false; ///< enhancing LRV crossing in front of the aorta below the SMA
   double leftRenalVeinHu = 200.0;
   double bolusGradientHuPerCm = 0.0; ///< lumen HU change per cm upward from the site; [−10, 10]
+
+  // Branch variants (issue 31), library-only for now (the SyntheticAorticPhantom CLI does not set
+  // them). With every one at its default the phantom is the one above, voxel for voxel.
+  double aortaAboveSiteMm = 80.0; ///< the aorta's top above the site, mm; [20, 400] (250+: into the chest)
+  bool includeRenals = true;      ///< false: no renal artery (the truth's site stays where it was)
+  double renalDescentDeg = 0.0;   ///< both renals run down by this from horizontal; [0, 65]
+  /// Both renals turned about the vertical from their lateral course: positive anterior (−y),
+  /// negative posterior; [−60, 60].
+  double renalTakeoffDeg = 0.0;
+  double renalStubMm = 0.0; ///< 0: renals to the hila; else each ends this far outside the aortic lumen; [0, 60]
+  /// 0: none; else each renal divides this far outside the aortic lumen into an upper and a lower
+  /// branch (radius 2.2 mm, ±25° from its course in the vertical plane); [0, 40].
+  double renalDivisionMm = 0.0;
+  /// 0: none; else a right accessory renal (radius 2 mm, horizontal, lateral) this far above (+) or
+  /// below (−) the right renal's origin, mm; |value| in [8, 40].
+  double accessoryRenalOffsetMm = 0.0;
+  bool includeInferiorMesenteric = false;  ///< IMA (radius 1.75 mm) from the sac's front, running down and left
+  bool parallelSuperiorMesenteric = false; ///< the SMA turns down at once and runs parallel to the aorta, in front
 };
 
 /// Labels of the truth image.

@@ -169,7 +169,8 @@ struct RepairPlan
   bool Reached(PlanStage stage) const { return static_cast<int>(reached) >= static_cast<int>(stage); }
   bool HasGraft() const { return simulatedFamily >= 0; }
   /// Where the main body's proximal edge is deployed: along the aorta from its top, mm (the
-  /// proximal site + PlanParams::deploymentOffsetMm), when the plan reaches the device.
+  /// proximal site + PlanParams::deploymentOffsetMm), when the plan reaches the device; NaN when
+  /// the site is not known (ProximalSite::Known).
   double deploymentTargetAbscissaMm = 0.0;
   /// The family whose components the plan orders (FamilyForMainBody: the recommended one, else the
   /// nearest with a main body); −1 when no family has a main body.

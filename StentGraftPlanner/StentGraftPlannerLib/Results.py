@@ -167,6 +167,7 @@ VALUE_WORDS = {
     "recommendedDevice": {NO_DEVICE: "none within its instructions for use"},
     "ipsilateralSideUsed": {"none": "no main body"},
     "orderList": {"none": "no main body"},
+    "proximalSiteSource": {"notFound": "not known: no renal artery in view (place the lowest-renal landmark)"},
 }
 
 #: Numbers whose 0 is a verdict, not a measurement: name -> the words shown for it.
@@ -187,6 +188,8 @@ PROXIMAL_SITE_SOURCES = {
     "renal": "the lowest renal artery found on the centerlines",
     "top": "the top of the aortic centerline: no renal artery was found, so place the lowest-renal "
     "landmark and run again for a true proximal neck",
+    "notFound": "nowhere: no renal artery was found and the aorta runs on past the renal level, so the neck "
+    "values and the deployment target are not measured; place the lowest-renal landmark and run again",
 }
 
 
@@ -688,7 +691,7 @@ def recommendationLines(report):
     if site is not None:
         source = site.get("source")
         where = PROXIMAL_SITE_SOURCES.get(source, "source %r" % source)
-        kind = "warning" if source == "top" else "text"
+        kind = "warning" if source in ("top", "notFound") else "text"
         lines.append((kind, "Proximal implantation site from %s." % where))
     for family in report.get("families", []):
         counts = collections.Counter(c.get("status") for c in family["checks"])
