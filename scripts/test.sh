@@ -46,8 +46,10 @@ if [ "$#" -eq 2 ] && [ "$1" = "-LE" ] && [ "$2" = "benchmark" ] || [ "${SGP_SANI
     # PartialPlanOnACutScan, FindAorticSeed's named cases, the CLI tests). Likewise the deployment's
     # phantom series (issues 29 and 30: ten configured and deployed plans, five more anatomies): two
     # of them, the neck thrombus and the limb one length too long, run here and cover the deployment
-    # and the fit check on healthy wall.
-    repeated='^(AutomaticSeed\.|FindAorticSeed\.(RandomAnatomies|EveryTestPhantom)_|RealAnatomy/(AvtAutomaticSeed|AvtCutBelowTheBifurcation)\.|Deployment/|Deployment\.(SameNeck|DemoPhantom|Twelve|TwentySix|Sixteen))'
+    # and the fit check on healthy wall. The landmark variants (issue 31: Issue31/, 11 renal and 9
+    # iliac phantoms) run the labelling the single-phantom tests here run (VisceralBranches,
+    # ChestScanWithoutRenals, CutScanWithoutRenals).
+    repeated='^(AutomaticSeed\.|FindAorticSeed\.(RandomAnatomies|EveryTestPhantom)_|RealAnatomy/(AvtAutomaticSeed|AvtCutBelowTheBifurcation)\.|Deployment/|Deployment\.(SameNeck|DemoPhantom|Twelve|TwentySix|Sixteen)|Issue31/)'
     ctest --output-on-failure -j 2 -L 'unit|cli' -E "$repeated"
   fi
 fi

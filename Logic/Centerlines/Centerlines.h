@@ -22,6 +22,9 @@ struct Centerline
   Points points;              ///< n×3, LPS mm
   Eigen::VectorXd radiusMm;   ///< n, inscribed-sphere radius, mm
   Eigen::VectorXd abscissaMm; ///< n, arc length from the first point, mm
+  /// A side branch of the aorta: why it has its name (or none) — the side it leaves from, its
+  /// course, calibre and height, and the rule (LabelAortoIliacTree.h, step 4); else empty.
+  std::string evidence;
 
   Eigen::Index Size() const { return points.rows(); }
   double LengthMm() const { return Size() ? abscissaMm[Size() - 1] : 0.0; }
@@ -58,6 +61,8 @@ struct CenterlineTree
   /// The scan's extent along LPS z (its voxel centres' lowest and highest z, mm); NaN: not known.
   double scanLowestZMm = std::numeric_limits<double>::quiet_NaN();
   double scanHighestZMm = std::numeric_limits<double>::quiet_NaN();
+  /// The scan's coarsest voxel spacing, mm; NaN: not known.
+  double largestSpacingMm = std::numeric_limits<double>::quiet_NaN();
   /// The scan cuts an iliac short: the plan is partial.
   bool Partial() const { return std::isfinite(iliacCoverageMm[0]) || std::isfinite(iliacCoverageMm[1]); }
 

@@ -570,6 +570,45 @@ std::vector<std::string> NameAorticBranches(const SkeletonGraph& graph,
   return names;
 }
 
+/// How a side branch leaves the aorta, in words: its side (degrees from the front toward the
+/// patient's left or right), its course (degrees below or above horizontal), its calibre
+/// (twice its median inscribed radius) and its height above the bifurcation.
+std::string DescribeBranch(const SideBranch& b, double heightMm)
+{
+  constexpr double degrees = 57.29577951308232;
+  std::string side = "no side (it leaves along the aorta)";
+  if (std::hypot(b.offset.x(), b.offset.y()) >= 0.5)
+  {
+    const double fromFront = std::atan2(std::abs(b.offset.x()), -b.offset.y()) * degrees;
+    side = "its " + std::string(fromFront < 1.0 ? "front" : (b.offset.x() < 0 ? "right" : "left")) + " side (" +
+           FormatNumber(fromFront, 0) + "° from the front)";
+  }
+  const double slope = std::asin(std::clamp(b.direction.z(), -1.0, 1.0)) * degrees;
+  return "leaves the aorta from " + side + ", runs " + FormatNumber(std::abs(slope), 0) + "° " +
+         (slope <= 0 ? "below" : "above") + " horizontal, " + FormatNumber(2 * b.radius, 1) + " mm across, " +
+         FormatNumber(heightMm, 0) + " mm above the bifurcation";
+}
+
+/// The rule that gave `name` (NameAorticBranches), or why none did (empty name).
+std::string NamingRule(const std::string& name)
+{
+  const auto ends = [&](const std::string& tail)
+  { return name.size() >= tail.size() && name.compare(name.size() - tail.size(), tail.size(), tail) == 0; };
+  if (name == "superiorMesenteric")
+    return "the lowest anterior visceral trunk (at least 0.7 x the widest anterior branch's calibre)";
+  if (name == "coeliac")
+    return "the anterior visceral trunk above the superior mesenteric";
+  if (name == "inferiorMesenteric")
+    return "the widest thinner anterior branch more than 20 mm below the superior mesenteric and the renals";
+  if (ends("AccessoryRenal"))
+    return "a narrower lateral branch of the renal range on that side";
+  if (ends("Renal"))
+    return "the widest lateral branch on that side running level to 65° down, between 20 mm above the "
+           "bifurcation and 15 mm above the superior mesenteric";
+  return "no rule names it (not anterior or lateral, outside the heights or calibres the rules read, or a second "
+         "candidate), so it is not forced";
+}
+
 /// The partial Y (the file comment, step 1): how much of each cut common iliac the scan holds
 /// below the aortic bifurcation B (where the axes meet, VesselOrigins.h; the skeleton's junction
 /// lies 2–4 mm lower, in the merged cross-section): from B's foot on the iliac's first tangent
@@ -733,6 +772,7 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
 
   CenterlineTree tree;
   tree.scanLowestZMm = graph.scanLowestZMm;
+  tree.largestSpacingMm = graph.largestSpacingMm;
   tree.scanHighestZMm = graph.scanHighestZMm;
   const double reach = params.directionReachMm;
   const Point3 bifurcation = graph.nodes[y.node].position;
@@ -841,9 +881,12 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
   int numbered = 0;
   for (int i = 0; i < int(aorticSides.size()); ++i)
   {
+    const std::string rule = NamingRule(names[i]);
     if (names[i].empty())
       names[i] = "aorticBranch" + std::to_string(++numbered);
     tree.sideBranches.push_back(Finish(names[i], aorticSides[i].path.points, aorticSides[i].path.radii, params));
+    tree.sideBranches.back().evidence =
+      DescribeBranch(aorticSides[i], graph.nodes[aorticSides[i].node].position.z() - bifurcation.z()) + ": " + rule;
   }
   // Names are keys: a second accessory renal on one side becomes rightAccessoryRenal2, ….
   for (std::size_t i = 0; i < tree.sideBranches.size(); ++i)

@@ -440,6 +440,8 @@ SkeletonGraph BuildSkeletonGraph(const Skeleton& skeleton,
     out.scanLowestZMm = std::min(out.scanLowestZMm, p.z());
     out.scanHighestZMm = std::max(out.scanHighestZMm, p.z());
   }
+  const auto spacing = reference.GetSpacing();
+  out.largestSpacingMm = std::max({ spacing[0], spacing[1], spacing[2] });
   return out;
 }
 

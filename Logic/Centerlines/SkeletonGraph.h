@@ -68,6 +68,7 @@ struct SkeletonGraph
   /// The image's extent along LPS z (inferior to superior): the lowest and highest z of its
   /// corner voxel centres, mm; for error messages about what the scan covers.
   double scanLowestZMm = 0.0, scanHighestZMm = 0.0;
+  double largestSpacingMm = 0.0; ///< the image's coarsest voxel spacing (its slice thickness, mostly), mm
 
   int Degree(int node) const { return static_cast<int>(nodes[node].edges.size()); }
   int Other(int edge, int node) const { return edges[edge].a == node ? edges[edge].b : edges[edge].a; }

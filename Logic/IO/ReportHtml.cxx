@@ -183,6 +183,23 @@ void MeasurementTable(const RepairPlan& plan, const std::map<std::string, PlanVa
   out << "</table>\n";
 }
 
+/// The aorta's side branches with the evidence for each name (LabelAortoIliacTree.h, step 4).
+void BranchTable(const RepairPlan& plan, std::ostream& out)
+{
+  if (!plan.Reached(PlanStage::Centerlines))
+    return;
+  std::string rows;
+  for (const Centerline& c : plan.centerlines.sideBranches)
+    if (!c.evidence.empty())
+      rows += "<tr><td>" + Escape(c.name) + "</td><td class=\"def\">" + Escape(c.evidence) + "</td></tr>";
+  if (rows.empty())
+    return;
+  out << "<h2>Branches of the aorta</h2>\n<p class=\"def\">Each named by the side it leaves from, its course, "
+         "calibre and height; a branch no rule names keeps a number.</p>\n<table><tr><th>branch</th><th>why "
+         "this name</th></tr>"
+      << rows << "</table>\n";
+}
+
 /// The order list (issue 29): the components to order, where each lies, the anatomy's lengths
 /// they were chosen from, and what could not be met.
 void OrderSection(const RepairPlan& plan, const std::map<std::string, PlanValue>& values, std::ostream& out)
@@ -614,6 +631,7 @@ std::string ReportHtml(const RepairPlan& plan, const ReportFigures& figures, con
   Summary(plan, values, out);
   OrderSection(plan, values, out);
   MeasurementTable(plan, values, out);
+  BranchTable(plan, out);
   const std::vector<SizingLevel> levels = SizingLevels(plan.measurements);
   out << "<h2>Diameter profiles</h2>\n";
   for (int v = 0; v < 3; ++v)

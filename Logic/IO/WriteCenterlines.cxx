@@ -12,6 +12,8 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
+#include <nlohmann/json.hpp>
+
 #include "IO/WriteModel.h"
 #include "IO/WriteTextFile.h"
 
@@ -64,7 +66,13 @@ void WriteLandmarks(const CenterlineTree& tree, const std::string& path)
     const Landmark& l = tree.landmarks[i];
     char position[128];
     std::snprintf(position, sizeof position, "[%.4f, %.4f, %.4f]", l.lps.x() + 0.0, l.lps.y() + 0.0, l.lps.z() + 0.0);
-    json << "        {\"id\": \"" << i + 1 << "\", \"label\": \"" << l.name << "\", \"description\": \"\", "
+    // An ostium's description: the evidence for its branch's name.
+    std::string description;
+    if (l.name.size() > 6 && l.name.compare(l.name.size() - 6, 6, "Ostium") == 0)
+      if (const Centerline* branch = tree.FindVessel(l.name.substr(0, l.name.size() - 6)))
+        description = branch->evidence;
+    json << "        {\"id\": \"" << i + 1 << "\", \"label\": \"" << l.name
+         << "\", \"description\": " << nlohmann::json(description).dump() << ", "
          << "\"associatedNodeID\": \"\", \"position\": " << position
          << ", \"orientation\": [-1.0, -0.0, -0.0, -0.0, -1.0, -0.0, 0.0, 0.0, 1.0], \"selected\": true, "
          << "\"locked\": true, \"visibility\": true, \"positionStatus\": \"defined\"}"

@@ -7,7 +7,8 @@
 /// file carries `SPACE` = `LPS`). Format from the extension: .vtp or .vtk.
 ///
 /// WriteLandmarks: a Slicer markups JSON file (`.mrk.json`, schema v1.0.3), one Fiducial node
-/// whose control points are the landmarks, labelled by name, `coordinateSystem` LPS. Slicer loads
+/// whose control points are the landmarks, labelled by name — an aortic branch's ostium described
+/// by the evidence for its name (Centerline::evidence) — `coordinateSystem` LPS. Slicer loads
 /// it as a point list with named points; a pointfile parameter declares it
 /// `coordinateSystem="lps"`.
 ///

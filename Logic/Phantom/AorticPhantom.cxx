@@ -30,6 +30,7 @@ constexpr double renalBranchRadiusMm = 2.2;
 constexpr double renalBranchTurnDeg = 25.0;
 constexpr double distalNeckLengthMm = 20.0;
 constexpr double commonIliacAngleDeg = 25.0;
+constexpr double kinkFromBifurcationMm = 10.0; ///< where a kinked common iliac bends
 constexpr double vertebraRadiusMm = 20.0;
 constexpr double corticalThicknessMm = 2.0;
 constexpr double corticalHu = 1100.0; // blurred by 1 mm, the 2 mm shell peaks near 800 HU
@@ -266,9 +267,21 @@ Anatomy BuildAnatomy(const PhantomParams& p)
     const std::string prefix = sideName[side];
     const double r = iliacRadius[side]; // outer; the lumen lies the wall's thickness inside
     iliacEnd[side] = commonIliacLengthMm[side] * Point3(lateral * std::sin(angle), 0, -std::cos(angle));
-    const std::vector<Point3> common{ Point3::Zero(), iliacEnd[side] };
+    std::vector<Point3> common{ Point3::Zero(), iliacEnd[side] };
+    if (p.commonIliacKinkDeg > 0.0 && commonIliacLengthMm[side] > kinkFromBifurcationMm + 5.0)
+    {
+      // 10 mm at the usual angle, then the rest turned outward by the kink (the length kept).
+      const double turned = angle + p.commonIliacKinkDeg * pi / 180.0;
+      const Point3 kink = kinkFromBifurcationMm * Point3(lateral * std::sin(angle), 0, -std::cos(angle));
+      iliacEnd[side] = kink + (commonIliacLengthMm[side] - kinkFromBifurcationMm) *
+                                Point3(lateral * std::sin(turned), 0, -std::cos(turned));
+      common = { Point3::Zero(), kink, iliacEnd[side] };
+    }
     const std::vector<Point3> external{ iliacEnd[side], iliacEnd[side] + 70.0 * Unit(lateral * 0.17, -0.15, -0.97) };
-    const std::vector<Point3> internal{ iliacEnd[side], iliacEnd[side] + 40.0 * Unit(lateral * 0.45, 0.55, -0.7) };
+    const std::vector<Point3> internal{
+      iliacEnd[side], iliacEnd[side] + 40.0 * (p.posteriorInternalIliac ? Unit(lateral * 0.15, 0.85, -0.5)
+                                                                        : Unit(lateral * 0.45, 0.55, -0.7))
+    };
     // The smaller branches' walls at most a third of their radius (a 2 mm wall would close a
     // 3 mm internal iliac).
     const auto lumenOf = [wallMm](double outer) { return outer - std::min(wallMm, outer / 3.0); };
@@ -279,7 +292,7 @@ Anatomy BuildAnatomy(const PhantomParams& p)
     // The internal iliac's ostium on the common iliac's wall: its most upstream point along the
     // common iliac's axis (the branch leaves that axis at its end; an oblique branch's ostium starts
     // there, where the common iliac divides).
-    const Eigen::Vector3d commonAxis = iliacEnd[side].normalized();
+    const Eigen::Vector3d commonAxis = (common.back() - common[common.size() - 2]).normalized();
     (side == 0 ? truth.sizing.rightInternalIliacOstium : truth.sizing.leftInternalIliacOstium) =
       commonIliacLengthMm[side] -
       OstiumLowerEdgeDepthMm(r - wallMm, lumenOf(0.55 * r), (internal[1] - internal[0]).normalized(), commonAxis);
@@ -792,6 +805,7 @@ void ValidatePhantomParams(const PhantomParams& p)
   check("renalStubMm", p.renalStubMm, 0, 60, "mm");
   check("renalDivisionMm", p.renalDivisionMm, 0, 40, "mm");
   check("accessoryRenalOffsetMm", p.accessoryRenalOffsetMm, -40, 40, "mm");
+  check("commonIliacKinkDeg", p.commonIliacKinkDeg, 0, 60, "degrees");
   if (p.accessoryRenalOffsetMm != 0.0 && std::abs(p.accessoryRenalOffsetMm) < 8.0)
     throw InputError("accessoryRenalOffsetMm is " + FormatNumber(p.accessoryRenalOffsetMm) +
                      " mm; expected 0 (none) or at least 8 mm above or below the right renal.");

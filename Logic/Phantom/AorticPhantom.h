@@ -137,6 +137,10 @@ struct PhantomParams
   double accessoryRenalOffsetMm = 0.0;
   bool includeInferiorMesenteric = false;  ///< IMA (radius 1.75 mm) from the sac's front, running down and left
   bool parallelSuperiorMesenteric = false; ///< the SMA turns down at once and runs parallel to the aorta, in front
+  /// Each common iliac bends outward (laterally, in its frontal plane) by this 10 mm below the
+  /// aortic bifurcation — a kinked start; its length along the axis is kept; [0, 60].
+  double commonIliacKinkDeg = 0.0;
+  bool posteriorInternalIliac = false; ///< the internal iliacs leave from the back (mostly posterior, down)
 };
 
 /// Labels of the truth image.

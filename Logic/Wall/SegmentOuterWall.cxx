@@ -230,7 +230,7 @@ Centerline OuterWallAxis(const OuterWall& wall, const std::string& name, double 
     radii.push_back(0.5 * p->areaDiameterMm);
   }
   if (points.size() < 2)
-    return Centerline{ name, Points(0, 3), Eigen::VectorXd(0), Eigen::VectorXd(0) };
+    return Centerline{ name, Points(0, 3), Eigen::VectorXd(0), Eigen::VectorXd(0), {} };
   return MakeCenterline(name, points, radii);
 }
 
