@@ -20,7 +20,7 @@ constexpr double snapMm = 10.0;       ///< axes meeting farther from the junctio
 constexpr double minimumSkipMm = 5.0; ///< the least length of a branch's centerline left out at a junction
 constexpr double chordMm = 15.0;      ///< each internal iliac chord's length
 /// How far below the skeleton's junction (along the aorta) the axes may meet and still be B, mm:
-/// straight iliacs met 0.1–1.0 mm above it on the phantoms (LandmarksPlanTest, IliacVariants).
+/// straight iliacs met 0.3–2.5 mm above it on the phantoms (LandmarksPlanTest, IliacVariants).
 constexpr double belowJunctionToleranceMm = 1.0;
 /// …on scans this fine or finer, mm: on 3 mm slices the junction itself lay 2.5–5.7 mm above B
 /// (15–55 mm common iliacs), and the axes met within 0.3–1.0 mm of B for 20–55 mm ones.
