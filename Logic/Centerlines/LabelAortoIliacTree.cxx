@@ -467,12 +467,20 @@ enum class Clock
 };
 constexpr double anteriorSectorDeg = 40.0, lateralSectorDeg = 150.0;
 
+/// The offset's angle from the front (−y) toward either side in the horizontal plane, degrees in
+/// [0, 180]; NaN when it leaves mostly up or down along the aorta (horizontal part under 0.5).
+double DegreesFromFront(const Eigen::Vector3d& offset)
+{
+  if (std::hypot(offset.x(), offset.y()) < 0.5)
+    return std::numeric_limits<double>::quiet_NaN();
+  return std::atan2(std::abs(offset.x()), -offset.y()) * 57.29577951308232;
+}
+
 Clock ClockOf(const Eigen::Vector3d& offset)
 {
-  const double horizontal = std::hypot(offset.x(), offset.y());
-  if (horizontal < 0.5) // leaves mostly up or down along the aorta: no side
+  const double fromAnterior = DegreesFromFront(offset);
+  if (std::isnan(fromAnterior)) // no side
     return Clock::Other;
-  const double fromAnterior = std::atan2(std::abs(offset.x()), -offset.y()) * 57.29577951308232;
   if (fromAnterior <= anteriorSectorDeg)
     return Clock::Anterior;
   if (fromAnterior < lateralSectorDeg)
@@ -577,9 +585,9 @@ std::string DescribeBranch(const SideBranch& b, double heightMm)
 {
   constexpr double degrees = 57.29577951308232;
   std::string side = "no side (it leaves along the aorta)";
-  if (std::hypot(b.offset.x(), b.offset.y()) >= 0.5)
+  const double fromFront = DegreesFromFront(b.offset);
+  if (!std::isnan(fromFront))
   {
-    const double fromFront = std::atan2(std::abs(b.offset.x()), -b.offset.y()) * degrees;
     side = "its " + std::string(fromFront < 1.0 ? "front" : (b.offset.x() < 0 ? "right" : "left")) + " side (" +
            FormatNumber(fromFront, 0) + "° from the front)";
   }
@@ -595,7 +603,8 @@ std::string NamingRule(const std::string& name)
   const auto ends = [&](const std::string& tail)
   { return name.size() >= tail.size() && name.compare(name.size() - tail.size(), tail.size(), tail) == 0; };
   if (name == "superiorMesenteric")
-    return "the lowest anterior visceral trunk (at least 0.7 x the widest anterior branch's calibre)";
+    return "the lowest anterior visceral trunk (at least " + FormatNumber(visceralShareOfWidest, 1) +
+           " x the widest anterior branch's calibre)";
   if (name == "coeliac")
     return "the anterior visceral trunk above the superior mesenteric";
   if (name == "inferiorMesenteric")

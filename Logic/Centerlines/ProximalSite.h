@@ -19,8 +19,8 @@
 ///  3. **top** — neither available, and the aorta in view reaches no higher than
 ///     MaximumRenalHeightMm above its bifurcation (the scan starts near the renal level, so the
 ///     renals may lie just above it): the top of the aortic centerline, with a warning that says so;
-///  4. **notFound** (ProximalSiteSource::None) — neither available, and the aorta in view reaches past where renal
-///  arteries leave
+///  4. **notFound** (ProximalSiteSource::None) — neither available, and the aorta in view
+///     reaches past where renal arteries leave
 ///     (its top more than MaximumRenalHeightMm above the bifurcation, or over an arch into the
 ///     chest): the site is **not known**. The neck values measured from it are not measured
 ///     (MeasureAnatomy.h), no deployment target is set, and the warning asks for the

@@ -10,6 +10,7 @@
 
 #include "Common/CheckRange.h"
 #include "Common/Errors.h"
+#include "Common/Median.h"
 
 namespace sgp
 {
@@ -108,8 +109,7 @@ struct WorkGraph
     }
     if (farthest < stubBeyondJunctionMm || radii.empty())
       return false;
-    std::nth_element(radii.begin(), radii.begin() + long(radii.size() / 2), radii.end());
-    const double median = radii[radii.size() / 2];
+    const double median = Median(radii);
     return median >= stubMinimumRadiusMm && median <= stubMaximumRadiusShare * junction.radiusMm;
   }
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <string>
 #include <utility>
@@ -81,10 +80,9 @@ double InternalIliacOriginAbscissa(const CenterlineTree& tree, int side)
   return ProjectOntoCenterline(iliac, origin);
 }
 
-/// The aortic axis and each common iliac's chord over `span(end)` (end: the file comment's chord
-/// end); the lines found (fewer than three when an iliac is missing or its chord degenerate).
-std::vector<Line> BifurcationAxes(const CenterlineTree& tree,
-                                  const std::function<std::pair<double, double>(double)>& span)
+/// The aortic axis and each common iliac's chord (the file comment); the lines found (fewer than
+/// three when an iliac is missing or its chord degenerate).
+std::vector<Line> BifurcationAxes(const CenterlineTree& tree)
 {
   const Centerline& aorta = tree.aorta;
   const double L = aorta.LengthMm();
@@ -97,9 +95,9 @@ std::vector<Line> BifurcationAxes(const CenterlineTree& tree,
     const double origin = InternalIliacOriginAbscissa(tree, side);
     const double end = std::isfinite(origin) ? std::min(BifurcationIliacReachMm, origin - 5.0)
                                              : std::min(BifurcationIliacReachMm, iliac.LengthMm());
-    const auto [from, to] = span(end);
-    if ((PositionAt(iliac, to) - PositionAt(iliac, from)).norm() > 1.0)
-      axes.push_back(Chord(iliac, from, to));
+    const double from = std::min(10.0, 0.5 * end);
+    if ((PositionAt(iliac, end) - PositionAt(iliac, from)).norm() > 1.0)
+      axes.push_back(Chord(iliac, from, end));
   }
   return axes;
 }
@@ -123,8 +121,7 @@ AorticBifurcation FindAorticBifurcation(const CenterlineTree& tree)
            (!thin || (at - junction).dot(down) <= belowJunctionToleranceMm);
   };
   AorticBifurcation result;
-  result.axesMeet =
-    meet(BifurcationAxes(tree, [](double end) { return std::make_pair(std::min(10.0, 0.5 * end), end); }), result.lps);
+  result.axesMeet = meet(BifurcationAxes(tree), result.lps);
   // (Chords over the iliacs' first 7 mm from the junction, before a kink 10 mm below B, met at
   // the junction too: the skeleton runs down the middle of the merged cross-section there. The
   // junction it is: 2.7–3.0 mm below B on those phantoms.)

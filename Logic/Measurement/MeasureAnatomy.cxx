@@ -303,6 +303,19 @@ void MeasureIliacAccess(const MeasureContext& c, const double iliacOffset[2], Me
   }
 }
 
+/// Sets the values called one of `names` to NaN (not measured); returns their names, comma-separated.
+std::string LeaveOut(const std::vector<std::string>& names, Measurements& out)
+{
+  std::string list;
+  for (Measurement& m : out.values)
+    if (std::find(names.begin(), names.end(), m.name) != names.end())
+    {
+      m.value = m.minMm = m.maxMm = m.areaMm = nan;
+      list += (list.empty() ? "" : ", ") + m.name;
+    }
+  return list;
+}
+
 /// A partial plan (CenterlineTree::iliacCoverageMm): on an iliac the scan cuts short, the values
 /// that need more of it than the scan holds are NaN, with one warning naming the coverage. The
 /// landing zone's diameters need its internal iliac origin in view; the iliac's length needs
@@ -324,13 +337,7 @@ void LeaveOutWhatTheScanDoesNotHold(const MeasureContext& c, Measurements& out)
       names.insert(names.begin(), { s + "IliacLumenDiameter", s + "IliacDiameter" });
     if (coverage < BifurcationIliacReachMm)
       names.insert(names.begin(), { "proximalSiteToBifurcationLength", "neckAngleBeta" });
-    std::string list;
-    for (Measurement& m : out.values)
-      if (std::find(names.begin(), names.end(), m.name) != names.end())
-      {
-        m.value = m.minMm = m.maxMm = m.areaMm = nan;
-        list += (list.empty() ? "" : ", ") + m.name;
-      }
+    const std::string list = LeaveOut(names, out);
     out.warnings.push_back("Partial plan: the scan ends " + FormatNumber(coverage, 1) + " mm below the aortic " +
                            "bifurcation along the " + s + " common iliac" +
                            (std::isfinite(c.internalIliacAbscissa[side]) ? "" : ", above its internal iliac origin") +
@@ -346,26 +353,11 @@ void LeaveOutWhatNeedsTheSite(const MeasureContext& c, Measurements& out)
 {
   if (c.site.Known())
     return;
-  static const char* const names[] = { "proximalNeckLumenDiameter",
-                                       "neckLumenDiameter15mm",
-                                       "proximalNeckDiameter",
-                                       "neckDiameter15mm",
-                                       "proximalNeckLength",
-                                       "proximalSiteToBifurcationLength",
-                                       "neckAngleBeta",
-                                       "neckAngleAlpha",
-                                       "neckConicity",
-                                       "thrombusVolume",
-                                       "sacVolume",
-                                       "neckThrombusArc",
-                                       "neckCalcificationArc" };
-  std::string list;
-  for (Measurement& m : out.values)
-    if (std::find(std::begin(names), std::end(names), m.name) != std::end(names))
-    {
-      m.value = m.minMm = m.maxMm = m.areaMm = nan;
-      list += (list.empty() ? "" : ", ") + m.name;
-    }
+  const std::string list =
+    LeaveOut({ "proximalNeckLumenDiameter", "neckLumenDiameter15mm", "proximalNeckDiameter", "neckDiameter15mm",
+               "proximalNeckLength", "proximalSiteToBifurcationLength", "neckAngleBeta", "neckAngleAlpha",
+               "neckConicity", "thrombusVolume", "sacVolume", "neckThrombusArc", "neckCalcificationArc" },
+             out);
   out.outerNeckEndMm = nan;
   out.reverseTaperMm = { nan, nan };
   out.warnings.push_back("The proximal implantation site is not known (no renal artery in view, no lowestRenalOstium "

@@ -379,15 +379,20 @@ void ChooseAndSimulateDevice(const WallDistanceField& wall,
 {
   report.Begin("SelectDevice", "Choosing the stent graft from the device catalogue and its components");
   const SizingAnatomy sizing = SizingFromMeasurements(plan.measurements);
-  if (!plan.measurements.site.Known())
+  // No site, no target: the catalogue is checked on the values that were measured (the neck's
+  // criteria indeterminate), nothing is configured or simulated.
+  const bool siteKnown = plan.measurements.site.Known();
+  plan.deploymentTargetAbscissaMm = siteKnown ? plan.measurements.site.abscissaMm + params.deploymentOffsetMm
+                                              : std::numeric_limits<double>::quiet_NaN();
+  std::optional<ConfigurationAnatomy> lengths;
+  if (siteKnown)
+    lengths = ConfigurationLengths(plan.centerlines, plan.measurements, plan.deploymentTargetAbscissaMm);
+  plan.selection = SelectDevice(sizing, params.catalog, params.selection, lengths ? &*lengths : nullptr);
+  WarnSizedOnLumen(plan.selection, report);
+  plan.orderedFamily = FamilyForMainBody(plan.selection);
+  AddOrderRows(plan);
+  if (!siteKnown)
   {
-    // No site, no target: the catalogue is checked on the values that were measured (the neck's
-    // criteria indeterminate), nothing is configured or simulated.
-    plan.deploymentTargetAbscissaMm = std::numeric_limits<double>::quiet_NaN();
-    plan.selection = SelectDevice(sizing, params.catalog, params.selection);
-    WarnSizedOnLumen(plan.selection, report);
-    plan.orderedFamily = FamilyForMainBody(plan.selection);
-    AddOrderRows(plan);
     const std::string why = "The proximal implantation site is not known (no renal artery in view)";
     if (request.requireSimulatedGraft)
       throw AlgorithmError(why + ", so there is no deployment target and no graft to simulate for "
@@ -396,13 +401,6 @@ void ChooseAndSimulateDevice(const WallDistanceField& wall,
     report.Warn(why + ": no deployment target is set and no graft is simulated; give --lowestRenalOstium.");
     return;
   }
-  plan.deploymentTargetAbscissaMm = plan.measurements.site.abscissaMm + params.deploymentOffsetMm;
-  const ConfigurationAnatomy lengths =
-    ConfigurationLengths(plan.centerlines, plan.measurements, plan.deploymentTargetAbscissaMm);
-  plan.selection = SelectDevice(sizing, params.catalog, params.selection, &lengths);
-  WarnSizedOnLumen(plan.selection, report);
-  plan.orderedFamily = FamilyForMainBody(plan.selection);
-  AddOrderRows(plan);
   const DeviceConfiguration* configuration = plan.Configuration();
   if (configuration && configuration->configured)
   {
