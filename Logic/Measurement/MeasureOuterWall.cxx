@@ -1,6 +1,7 @@
 #include "Measurement/MeasureOuterWall.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "Common/Format.h"
@@ -186,6 +187,23 @@ void MeasureOuterWall(const VesselWall& wall, const OuterWallLevels& levels, Mea
     OuterDiameter("maxAneurysmDiameter", widest, widest ? widest->maxCaliperMm : nan,
                   widest ? widest->supportedFraction : 0.0, "aorta", widest ? widest->abscissaMm : levels.siteMm,
                   "(c) largest maximum caliper between the proximal site and the aortic bifurcation (Dmax)", out));
+  // The caliper's ends on the arc no boundary showed on (a neighbour without a fat plane): the
+  // width there is the fitted model's, estimated even where most of the circumference is traced.
+  if (widest && widest->Usable() && !out.values.back().estimated && !widest->supported.empty())
+  {
+    const std::array<int, 2> ends = widest->maxCaliperRays;
+    if (!widest->supported[std::size_t(ends[0])] || !widest->supported[std::size_t(ends[1])])
+    {
+      const bool both = !widest->supported[std::size_t(ends[0])] && !widest->supported[std::size_t(ends[1])];
+      out.values.back().estimated = true;
+      out.warnings.push_back("maxAneurysmDiameter is estimated: " + std::string(both ? "both ends" : "one end") +
+                             " of its caliper at " + FormatNumber(widest->abscissaMm) + " mm along the aorta " +
+                             (both ? "lie" : "lies") +
+                             " where no outer boundary shows (a neighbour against the wall); the wall there is the " +
+                             (widest->elliptical ? "ellipse" : "circle") + " fitted to the traced arc (" +
+                             FormatNumber(widest->maxCaliperMm) + " mm).");
+    }
+  }
   RequireCovered(out.values.back(), aorta, levels.siteMm, std::min(levels.bifurcationMm, levels.trunkEndMm), out);
   const OuterWallPlane* narrowest = nullptr;
   for (const OuterWallPlane& p : aorta.planes)

@@ -15,7 +15,8 @@
 ///    without a contour (SegmentOuterWall: under 25 % and no traced plane on both sides) or none
 ///    within a step: NaN with a warning. (c), (d) and the volumes, extremes and sums over a
 ///    stretch, are NaN with a warning when the stretch has a gap of more than 10 mm without a
-///    contour (the extreme may lie in it);
+///    contour (the extreme may lie in it); (c) is estimated too when an end of its caliper lies on
+///    a ray without a boundary (the fitted model's, behind a neighbour);
 ///  - `thrombusVolume` Σ thrombus area × step over [site, B], mL; `sacVolume` Σ outer area ×
 ///    step, mL; `maxThrombusThickness` the largest ray thrombus over [site, B]; `neckThrombusArc`
 ///    the largest share of a plane's rays with thrombus thicker than 2 mm over [site, site + 15];

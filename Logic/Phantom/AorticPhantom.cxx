@@ -354,7 +354,7 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   PhantomSizing& sizing = truth.sizing;
   sizing.outerProximalNeckDiameter = 2 * radiusAtZ(siteZ);
   sizing.outerNeckDiameter15mm = 2 * radiusAtZ(siteZ - 15.0);
-  sizing.outerMaxAneurysmDiameter = 2 * rMax;
+  sizing.outerMaxAneurysmDiameter = wall ? std::max(2 * rMax, wall->MaxCaliperMm(0.0, siteZ)) : 2 * rMax;
   sizing.outerDistalNeckMinDiameter = 2 * rDistal;
   sizing.outerRightIliacDiameter = p.rightIliacDiameterMm;
   sizing.outerLeftIliacDiameter = p.leftIliacDiameterMm;
@@ -798,6 +798,8 @@ void ValidatePhantomParams(const PhantomParams& p)
   check("ivcHu", p.ivcHu, -200, 400, "HU");
   check("duodenumHu", p.duodenumHu, -200, 400, "HU");
   check("leftRenalVeinHu", p.leftRenalVeinHu, -200, 400, "HU");
+  check("ivcArcDeg", p.ivcArcDeg, 72, 180, "degrees");
+  check("sacAxisRatio", p.sacAxisRatio, 1, 1.5, "");
   check("bolusGradientHuPerCm", p.bolusGradientHuPerCm, -10, 10, "HU/cm");
   check("aortaAboveSiteMm", p.aortaAboveSiteMm, 20, 400, "mm");
   check("renalDescentDeg", p.renalDescentDeg, 0, 65, "degrees");
@@ -815,6 +817,10 @@ void ValidatePhantomParams(const PhantomParams& p)
   if (needsWall && !(p.wallThicknessMm > 0))
     throw InputError("Thrombus, calcification and the neighbours lie in or against the vessel wall; wallThicknessMm is "
                      "0 — give a wall (e.g. 1.5 mm).");
+  if (p.sacAxisRatio > 1.0 && !(p.thrombusMaxThicknessMm > 0))
+    throw InputError("sacAxisRatio is " + FormatNumber(p.sacAxisRatio) +
+                     "; an elliptical sac is filled by thrombus around its round lumen — give "
+                     "thrombusMaxThicknessMm > 0 (or sacAxisRatio 1).");
   // The lumen must keep at least a quarter of the inner wall's radius where the thrombus is thickest.
   const double innerSac = p.maxAneurysmDiameterMm / 2 - p.wallThicknessMm;
   const double sacThrombus = (p.thrombusConcentric ? 1.0 : 0.5) * p.thrombusMaxThicknessMm;

@@ -114,9 +114,16 @@ struct PhantomParams
   double psoasHu = 45.0;
   bool includeIvc = false; ///< unenhanced IVC pressed against the sac's right side
   double ivcHu = 50.0;
-  bool includeDuodenum = false;      ///< duodenum crossing in front of the neck
-  double duodenumHu = 120.0;         ///< bowel wall in the arterial phase
-  bool includeLeftRenalVein = false; ///< enhancing LRV crossing in front of the aorta below the SMA
+  double ivcArcDeg = 80.0; ///< the IVC's contact arc on the aorta's right side; [72, 180]
+  /// The sac's outer cross-section as an ellipse: its major semi-axis the profile's radius ×
+  /// (1 + (sacAxisRatio − 1)·sin(π u)) (u from the sac's top to its bottom, 0…1), its minor the
+  /// profile's radius; the lumen stays the round one and thrombus fills the rest. Needs sac
+  /// thrombus; [1, 1.5] (1: round).
+  double sacAxisRatio = 1.0;
+  PhantomSide sacMajorAxis = PhantomSide::Left; ///< left or right: transverse; anterior or posterior: AP
+  bool includeDuodenum = false;                 ///< duodenum crossing in front of the neck
+  double duodenumHu = 120.0;                    ///< bowel wall in the arterial phase
+  bool includeLeftRenalVein = false;            ///< enhancing LRV crossing in front of the aorta below the SMA
   double leftRenalVeinHu = 200.0;
   double bolusGradientHuPerCm = 0.0; ///< lumen HU change per cm upward from the site; [−10, 10]
 

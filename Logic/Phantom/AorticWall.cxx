@@ -52,9 +52,11 @@ AorticWall::AorticWall(const PhantomParams& p,
   , m_SacThrombusSideDeg(SideDegrees(p.thrombusSide))
   , m_NeckThrombusSideDeg(SideDegrees(p.neckThrombusSide))
   , m_Concentric(p.thrombusConcentric)
+  , m_SacAxisRatio(p.sacAxisRatio)
+  , m_SacMajorDeg(SideDegrees(p.sacMajorAxis))
 {
   for (double h = 0.0; h <= topH; h += 0.05)
-    m_MaxOuter = std::max(m_MaxOuter, m_Outer(h));
+    m_MaxOuter = std::max(m_MaxOuter, m_Outer(h) * Stretch(h));
   if (p.sacCalcificationArcDeg > 0.0)
   {
     const double third = (sacTopH - sacBottomH) / 3.0;
@@ -72,7 +74,7 @@ AorticWall::AorticWall(const PhantomParams& p,
     m_Neighbours.push_back({ "rightPsoas", PsoasLabel, p.psoasHu, 0.0, siteH, 225.0, 80.0, 25.0 });
   }
   if (p.includeIvc)
-    m_Neighbours.push_back({ "ivc", IvcLabel, p.ivcHu, 0.0, topH, 270.0, 80.0, 20.0 });
+    m_Neighbours.push_back({ "ivc", IvcLabel, p.ivcHu, 0.0, topH, 270.0, p.ivcArcDeg, 20.0 });
   if (p.includeDuodenum) // crossing in front of the neck, 24 mm high
     m_Neighbours.push_back(
       { "duodenum", DuodenumLabel, p.duodenumHu, sacTopH - 6.0, sacTopH + 18.0, 0.0, 100.0, 18.0 });
@@ -145,6 +147,30 @@ double AorticWall::Taper(double h) const
   return 0.5 - 0.5 * std::cos(pi * edge);
 }
 
+double AorticWall::Stretch(double h) const
+{
+  if (m_SacAxisRatio <= 1.0 || h <= m_SacBottom || h >= m_SacTop)
+    return 1.0;
+  return 1.0 + (m_SacAxisRatio - 1.0) * std::sin(pi * (m_SacTop - h) / (m_SacTop - m_SacBottom));
+}
+
+double AorticWall::OuterRadius(double h, double thetaDeg) const
+{
+  const double b = m_Outer(h), stretch = Stretch(h);
+  if (stretch == 1.0)
+    return b;
+  const double a = stretch * b, phi = (thetaDeg - m_SacMajorDeg) * degToRad;
+  return a * b / std::hypot(b * std::cos(phi), a * std::sin(phi));
+}
+
+double AorticWall::MaxCaliperMm(double fromH, double toH) const
+{
+  double largest = 0.0;
+  for (double h = fromH; h <= toH; h += 0.01)
+    largest = std::max(largest, 2.0 * m_Outer(h) * Stretch(h));
+  return largest;
+}
+
 double AorticWall::ThrombusThickness(double h) const
 {
   if (h >= m_SacBottom && h <= m_SacTop && m_SacThrombusMm > 0.0)
@@ -171,7 +197,7 @@ double AorticWall::ThrombusThicknessAt(double h, double thetaDeg) const
   const Eigen::Vector2d u = SideVector(thetaDeg), c = LumenCentre(h);
   const double rl = LumenRadius(h), b = u.dot(c);
   const double t = b + std::sqrt(std::max(0.0, b * b - c.squaredNorm() + rl * rl));
-  return std::max(0.0, InnerRadius(h) - t);
+  return std::max(0.0, InnerRadius(h, thetaDeg) - t);
 }
 
 void AorticWall::SampleLumen(double stepMm, std::vector<Point3>& points, std::vector<double>& radii) const
@@ -192,12 +218,12 @@ void AorticWall::SampleLumen(double stepMm, std::vector<Point3>& points, std::ve
 
 double AorticWall::WallSignedDistance(const Coordinates& c) const
 {
-  return std::max(c.rho - OuterRadius(c.h), InnerRadius(c.h) - c.rho);
+  return std::max(c.rho - OuterRadius(c.h, c.thetaDeg), InnerRadius(c.h, c.thetaDeg) - c.rho);
 }
 
 double AorticWall::CalcificationSignedDistance(const Coordinates& c, const WallCalcification& w) const
 {
-  const double radial = std::max(c.rho - OuterRadius(c.h), InnerRadius(c.h) - 1.0 - c.rho);
+  const double radial = std::max(c.rho - OuterRadius(c.h, c.thetaDeg), InnerRadius(c.h, c.thetaDeg) - 1.0 - c.rho);
   const double around = c.rho * (AngleBetweenDeg(c.thetaDeg, w.sideDeg) - 0.5 * w.arcDeg) * degToRad;
   const double along = std::max(w.fromH - c.h, c.h - w.toH);
   return std::max({ radial, around, along });
@@ -205,7 +231,7 @@ double AorticWall::CalcificationSignedDistance(const Coordinates& c, const WallC
 
 double AorticWall::NeighbourSignedDistance(const Coordinates& c, const WallNeighbour& n) const
 {
-  const double ro = OuterRadius(c.h);
+  const double ro = OuterRadius(c.h, c.thetaDeg);
   const double radial = std::max(ro - c.rho, c.rho - ro - n.thicknessMm);
   const double around = c.rho * (AngleBetweenDeg(c.thetaDeg, n.sideDeg) - 0.5 * n.arcDeg) * degToRad;
   const double along = std::max(n.fromH - c.h, c.h - n.toH);
@@ -220,8 +246,16 @@ double AorticWall::ThrombusVolumeMl() const
   constexpr double dh = 0.05;
   for (double h = 0.5 * dh; h < m_Site; h += dh)
   {
-    const double ri = InnerRadius(h), rl = LumenRadius(h);
-    mm3 += pi * (ri * ri - rl * rl) * dh;
+    const double rl = LumenRadius(h);
+    const double ri = InnerRadius(h);
+    double area = pi * (ri * ri - rl * rl);
+    if (Stretch(h) > 1.0) // ½ ∮ Ri(h, θ)² dθ, 1° steps, less the lumen
+    {
+      area = -pi * rl * rl;
+      for (int k = 0; k < 360; ++k)
+        area += 0.5 * std::pow(InnerRadius(h, k + 0.5), 2) * degToRad;
+    }
+    mm3 += area * dh;
   }
   return mm3 / 1000.0;
 }
@@ -230,7 +264,12 @@ double AorticWall::MaxThrombusThicknessMm() const
 {
   double largest = 0.0;
   for (double h = 0.0; h <= m_Site; h += 0.05)
+  {
     largest = std::max(largest, ThrombusThickness(h));
+    if (Stretch(h) > 1.0) // thickest at the ellipse's ends or on the crescent's side
+      for (int k = 0; k < 360; ++k)
+        largest = std::max(largest, ThrombusThicknessAt(h, k));
+  }
   return largest;
 }
 

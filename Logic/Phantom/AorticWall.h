@@ -12,8 +12,11 @@
 /// anterior 0°, left 90°, posterior 180°, right 270°.
 ///
 /// Per level h (all mm):
-///  - outer radius Ro(h): the vessel's radius profile (AorticPhantom.h's r(z));
-///  - inner wall radius Ri = Ro − wallThicknessMm;
+///  - outer radius Ro(h): the vessel's radius profile (AorticPhantom.h's r(z)); in the sac, with
+///    sacAxisRatio q > 1, the outer cross-section is the ellipse with semi-axes Ro·(1 + (q − 1)·
+///    sin(π u)) along the major axis's side and Ro across it, Ro(h, θ) its radius along θ;
+///  - inner wall radius Ri = Ro − wallThicknessMm (along θ: Ro(h, θ) − wallThicknessMm, so the
+///    thrombus fills the ellipse's ends around the round lumen);
 ///  - thrombus thickness T(h): in the sac T_max · sin(π u) (u from the sac's top, 0…1); in the lower
 ///    neck, from the sac's top up `neckThrombusLengthMm`, T_neck with 3 mm cosine tapers at both
 ///    ends; 0 elsewhere. Its side is the ILT's thick side;
@@ -90,8 +93,14 @@ public:
   /// The in-plane unit directions at h, LPS: anterior and left.
   std::array<Eigen::Vector3d, 2> Frame(double h) const;
 
+  /// The round profile (the ellipse's minor semi-axis in an elliptical sac).
   double OuterRadius(double h) const { return m_Outer(h); }
   double InnerRadius(double h) const { return m_Outer(h) - m_WallMm; }
+  /// Along the in-plane direction θ (degrees from anterior toward the left).
+  double OuterRadius(double h, double thetaDeg) const;
+  double InnerRadius(double h, double thetaDeg) const { return OuterRadius(h, thetaDeg) - m_WallMm; }
+  /// The largest caliper of the outer cross-section over h in [fromH, toH] (0.01 mm steps), mm.
+  double MaxCaliperMm(double fromH, double toH) const;
   double ThrombusThickness(double h) const;
   /// The lumen disc at h: its centre in the plane (anterior, left) and its radius.
   Eigen::Vector2d LumenCentre(double h) const;
@@ -105,7 +114,7 @@ public:
 
   /// Signed distances (negative inside) at x of: the outer wall's disc, the wall annulus, one
   /// calcification (its index), one neighbour (its index).
-  double OuterSignedDistance(const Coordinates& c) const { return c.rho - OuterRadius(c.h); }
+  double OuterSignedDistance(const Coordinates& c) const { return c.rho - OuterRadius(c.h, c.thetaDeg); }
   double WallSignedDistance(const Coordinates& c) const;
   double CalcificationSignedDistance(const Coordinates& c, const WallCalcification& w) const;
   double NeighbourSignedDistance(const Coordinates& c, const WallNeighbour& n) const;
@@ -141,6 +150,8 @@ private:
   double m_SacThrombusMm, m_NeckThrombusMm, m_NeckThrombusLengthMm;
   double m_SacThrombusSideDeg, m_NeckThrombusSideDeg;
   bool m_Concentric;
+  double m_SacAxisRatio, m_SacMajorDeg;
+  double Stretch(double h) const; ///< the major semi-axis over the minor at h, ≥ 1
   std::vector<WallCalcification> m_Calcifications;
   std::vector<WallNeighbour> m_Neighbours;
 };

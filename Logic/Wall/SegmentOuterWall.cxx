@@ -1,16 +1,16 @@
 #include "Wall/SegmentOuterWall.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
-
-#include <tuple>
 
 #include <Eigen/Dense>
 
 #include "Common/CheckRange.h"
 #include "Common/Errors.h"
 #include "Common/Median.h"
+#include "Wall/WallModel.h"
 
 namespace sgp
 {
@@ -87,42 +87,32 @@ Eigen::VectorXd SmoothCircular(const Eigen::VectorXd& r, int half)
   return out;
 }
 
-/// Smallest and largest width of a closed contour (n × 3 in its plane), over 180 directions.
-std::pair<double, double> Calipers(const Points& contour, const Eigen::Vector3d& u, const Eigen::Vector3d& v)
+/// A closed contour's (n × 3 in its plane) smallest and largest width over 180 directions, and
+/// the two points (row indices) at the ends of the largest.
+struct ContourCalipers
 {
   double smallest = std::numeric_limits<double>::infinity(), largest = 0.0;
+  std::array<int, 2> largestEnds{ 0, 0 };
+};
+
+ContourCalipers Calipers(const Points& contour, const Eigen::Vector3d& u, const Eigen::Vector3d& v)
+{
+  ContourCalipers c;
   for (int a = 0; a < 180; ++a)
   {
     const double angle = pi * a / 180;
     const Eigen::Vector3d d = std::cos(angle) * u + std::sin(angle) * v;
     const Eigen::VectorXd projection = contour * d;
-    const double width = projection.maxCoeff() - projection.minCoeff();
-    smallest = std::min(smallest, width);
-    largest = std::max(largest, width);
+    Eigen::Index low = 0, high = 0;
+    const double width = projection.maxCoeff(&high) - projection.minCoeff(&low);
+    c.smallest = std::min(c.smallest, width);
+    if (width > c.largest)
+    {
+      c.largest = width;
+      c.largestEnds = { int(low), int(high) };
+    }
   }
-  return { smallest, largest };
-}
-
-/// Kåsa's algebraic circle fit: centre (x, y) and radius from points (n × 2), n ≥ 3.
-Eigen::Vector3d FitCircle(const std::vector<Eigen::Vector2d>& points)
-{
-  Eigen::MatrixXd A(points.size(), 3);
-  Eigen::VectorXd b(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-  {
-    A.row(i) << 2 * points[i].x(), 2 * points[i].y(), 1.0;
-    b[i] = points[i].squaredNorm();
-  }
-  const Eigen::Vector3d x = A.colPivHouseholderQr().solve(b);
-  return { x[0], x[1], std::sqrt(std::max(0.0, x[2] + x[0] * x[0] + x[1] * x[1])) };
-}
-
-/// Where the ray from the circle's centre frame origin along u meets the circle (x, y, R).
-double RayCircle(const Eigen::Vector3d& circle, const Eigen::Vector2d& u)
-{
-  const Eigen::Vector2d c = circle.head<2>();
-  const double b = u.dot(c);
-  return b + std::sqrt(std::max(0.0, b * b - c.squaredNorm() + circle[2] * circle[2]));
+  return c;
 }
 
 /// The contour, areas and calipers from the plane's radii (outer capped below by nothing; the
@@ -146,7 +136,10 @@ void FinishPlane(OuterWallPlane& plane)
   plane.areaMm2 = area;
   plane.lumenAreaMm2 = lumenArea;
   plane.areaDiameterMm = 2.0 * std::sqrt(area / pi);
-  std::tie(plane.minCaliperMm, plane.maxCaliperMm) = Calipers(plane.contourLps, plane.uLps, plane.vLps);
+  const ContourCalipers calipers = Calipers(plane.contourLps, plane.uLps, plane.vLps);
+  plane.minCaliperMm = calipers.smallest;
+  plane.maxCaliperMm = calipers.largest;
+  plane.maxCaliperRays = calipers.largestEnds;
 }
 
 } // namespace
@@ -253,6 +246,10 @@ void ValidateOuterWallParams(const OuterWallParams& p)
   CheckRange("minimumSupport", p.minimumSupport, 0, 1, "");
   CheckRange("smoothRays", p.smoothRays, 0, p.rays / 4, "");
   CheckRange("interpolateWithinMm", p.interpolateWithinMm, 0, 100, "mm");
+  CheckRange("ellipseMinimumSupport", p.ellipseMinimumSupport, 0.3, 1, "");
+  CheckRange("maxAxisRatio", p.maxAxisRatio, 1, 3, "");
+  CheckRange("hiddenArcShare", p.hiddenArcShare, 0, 1, "");
+  CheckRange("hiddenBeyondMm", p.hiddenBeyondMm, 0, 100, "mm");
 }
 
 OuterWall SegmentOuterWall(const CtImage& ct,
@@ -353,10 +350,7 @@ OuterWall SegmentOuterWall(const CtImage& ct,
     {
       for (int iteration = 0; iteration < 20; ++iteration)
       {
-        std::vector<Eigen::Vector2d> points;
-        for (int k = 0; k < K; ++k)
-          if (kept[k])
-            points.push_back(candidate[k] * direction[k]);
+        const std::vector<Eigen::Vector2d> points = KeptPoints(kept, candidate, direction);
         if (points.size() < 3)
           break;
         circle = FitCircle(points);
@@ -393,15 +387,61 @@ OuterWall SegmentOuterWall(const CtImage& ct,
       dropOutliers(kept, circle);
       if (circle[2] > 0.0)
       {
-        std::vector<Eigen::Vector2d> points;
         for (int k = 0; k < K; ++k)
-        {
           kept[k] = candidate[k] > 0.0 && candidate[k] <= RayCircle(circle, direction[k]) + params.outlierMm;
-          if (kept[k])
-            points.push_back(candidate[k] * direction[k]);
-        }
+        const std::vector<Eigen::Vector2d> points = KeptPoints(kept, candidate, direction);
         if (points.size() >= 3)
           circle = FitCircle(points);
+      }
+    }
+    // 5. An elliptical sac (axis ratio up to 1.3 on real sacs) completed by its best circle where
+    // a neighbour hides an arc under-reads Dmax (4.0 mm on a real 42 × 48 mm sac; 59.2 for 66.1 mm
+    // on the 1.2 phantom with the IVC over an end of the major axis). Where such an arc is hidden
+    // (`hiddenArcShare` of the rays without a candidate or with one beyond `hiddenBeyondMm` of the
+    // circle: a neighbour's far edge), an ellipse grown from the circle's kept candidates — refitted
+    // with every candidate at most outlierMm outside it until the kept set holds — completes the
+    // plane instead, when it explains its candidates better (BIC), keeps at least as many, at least
+    // `ellipseMinimumSupport` of the rays (five parameters are not extrapolated across more than
+    // the rest), with its axes' ratio at most `maxAxisRatio`. Elsewhere the circle decides, as
+    // before: on the tilted planes of a sac's flanks the grown ellipse took in the blurred
+    // shoulder's crossings (thrombus volume 11 % high, (a) +1.2 mm beside a calcified arc), and an
+    // ellipse fitted there to the circle's kept rays alone extrapolated 3–12 mm out.
+    WallModel model;
+    model.circle = circle;
+    int hidden = 0;
+    for (int k = 0; k < K && circle[2] > 0.0; ++k)
+      hidden += candidate[k] <= 0.0 || candidate[k] > RayCircle(circle, direction[k]) + params.hiddenBeyondMm ? 1 : 0;
+    if (circle[2] > 0.0 && double(hidden) >= params.hiddenArcShare * K)
+    {
+      std::vector<bool> grown = kept;
+      Ellipse ellipse;
+      bool fits = false;
+      for (int iteration = 0; iteration < 20; ++iteration)
+      {
+        const std::vector<Eigen::Vector2d> points = KeptPoints(grown, candidate, direction);
+        if (points.size() < 5)
+        {
+          fits = false;
+          break;
+        }
+        ellipse = FitEllipse(points);
+        fits = ellipse.AxisRatio() <= params.maxAxisRatio;
+        if (!fits)
+          break;
+        std::vector<bool> next(K, false);
+        for (int k = 0; k < K; ++k)
+          next[k] = candidate[k] > 0.0 && candidate[k] <= ellipse.Along(direction[k]) + params.outlierMm;
+        if (next == grown)
+          break;
+        grown = next;
+      }
+      const auto count = [](const std::vector<bool>& b) { return std::count(b.begin(), b.end(), true); };
+      if (fits && count(grown) >= count(kept) && double(count(grown)) >= params.ellipseMinimumSupport * K &&
+          EllipseExplainsBetter(ellipse, grown, candidate, direction))
+      {
+        model.elliptical = true;
+        model.ellipse = ellipse;
+        kept = grown;
       }
     }
     // The rays beside a sector without a boundary still see the neighbour's blurred edge (its
@@ -410,17 +450,20 @@ OuterWall SegmentOuterWall(const CtImage& ct,
     for (int k = 0; k < K; ++k)
       if (before[k] && (!before[(k + 1) % K] || !before[(k + K - 1) % K]))
         kept[k] = false;
-    std::vector<Eigen::Vector2d> keptPoints;
-    for (int k = 0; k < K; ++k)
-      if (kept[k])
-        keptPoints.push_back(candidate[k] * direction[k]);
+    const std::vector<Eigen::Vector2d> keptPoints = KeptPoints(kept, candidate, direction);
+    if (model.elliptical && keptPoints.size() >= 5)
+    {
+      model.ellipse = FitEllipse(keptPoints);
+      model.elliptical = model.ellipse.AxisRatio() <= params.maxAxisRatio;
+    }
     if (keptPoints.size() >= 3)
-      circle = FitCircle(keptPoints);
+      model.circle = FitCircle(keptPoints);
     int supported = 0;
     for (int k = 0; k < K; ++k)
       supported += kept[k] ? 1 : 0;
     plane.supportedFraction = double(supported) / K;
-    plane.flagged = plane.supportedFraction < params.minimumSupport || circle[2] <= 0.0;
+    plane.flagged = plane.supportedFraction < params.minimumSupport || model.circle[2] <= 0.0;
+    plane.elliptical = model.elliptical;
     plane.supported = kept;
     plane.uLps = u;
     plane.vLps = v;
@@ -433,7 +476,7 @@ OuterWall SegmentOuterWall(const CtImage& ct,
       Eigen::VectorXd raw(K), floor(K);
       for (int k = 0; k < K; ++k)
       {
-        const double onCircle = RayCircle(circle, direction[k]);
+        const double onCircle = model.Along(direction[k]);
         raw[k] = kept[k] ? candidate[k] : onCircle;
         floor[k] = std::min(plane.lumenRadiusMm[k], onCircle);
       }

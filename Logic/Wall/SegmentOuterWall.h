@@ -27,7 +27,16 @@
 ///     than `outlierMm` outside it; then every candidate is judged against that circle (kept when
 ///     at most `outlierMm` outside) and the circle refitted. The rays beside an unsupported sector
 ///     go too (they still see the neighbour's blurred edge), and the circle is fitted once more.
-///     The candidates kept are *supported*; on every other ray the boundary is the circle's.
+///  5. Where a neighbour hides an arc (`hiddenArcShare` of the rays without a candidate or with
+///     one more than `hiddenBeyondMm` outside the circle), an ellipse (the algebraic conic through
+///     the kept candidates, the lumen's centre inside) grown from the circle's kept candidates:
+///     refitted with every candidate at most `outlierMm` outside it, until the kept set holds. It
+///     completes the plane instead of the circle when it explains the candidates better (Bayesian
+///     information criterion), keeps at least as many, at least `ellipseMinimumSupport` of the
+///     rays, with its axes' ratio at most `maxAxisRatio` — the circle completing an elliptical
+///     sac's hidden arc under-reads Dmax by up to the axes' difference.
+///     The candidates kept are *supported*; on every other ray the boundary is the model's
+///     (circle or ellipse).
 /// The plane records the share of its rays that were supported; with fewer than
 /// `minimumSupport` it is flagged, and takes the contours of the traced planes above and below,
 /// ray by ray, when they are at most `interpolateWithinMm` apart (`interpolated`; otherwise, or
@@ -46,6 +55,7 @@
 /// Errors: InputError for parameters out of range or a centerline shorter than two points.
 #pragma once
 
+#include <array>
 #include <limits>
 #include <vector>
 
@@ -78,6 +88,14 @@ struct OuterWallParams
   /// HU at or above which a sample between the lumen's edge and the outer wall (+0.5 mm) is
   /// calcium; +∞: none is looked for.
   double calciumHu = std::numeric_limits<double>::infinity();
+  /// The ellipse stands in for the circle only with at least this share of the rays kept: five
+  /// parameters extrapolated over more than 40 % of the circumference are a guess; [0.3, 1].
+  double ellipseMinimumSupport = 0.6;
+  double maxAxisRatio = 1.5; ///< the most elliptical outer wall taken, major / minor; [1, 3]
+  /// A plane has a hidden arc (the ellipse is tried) when this share of its rays has no candidate
+  /// or one more than `hiddenBeyondMm` outside the circle — a neighbour without a fat plane; [0, 1].
+  double hiddenArcShare = 0.1;
+  double hiddenBeyondMm = 5.0;
 };
 
 struct OuterWallPlane
@@ -99,8 +117,11 @@ struct OuterWallPlane
   double areaDiameterMm = 0.0; ///< of the contour polygon, 2·√(area/π)
   double minCaliperMm = 0.0;   ///< smallest width of the contour (over 180 directions)
   double maxCaliperMm = 0.0;   ///< largest width of the contour (its maximum caliper)
-  bool flagged = false;        ///< fewer supported rays than minimumSupport: not traced in this plane
-  bool interpolated = false;   ///< flagged, its contour from the traced planes above and below
+  /// The rays at the two ends of the largest width (their contour points touch its two tangents).
+  std::array<int, 2> maxCaliperRays{ 0, 0 };
+  bool elliptical = false;   ///< the model standing in on unsupported rays was the ellipse
+  bool flagged = false;      ///< fewer supported rays than minimumSupport: not traced in this plane
+  bool interpolated = false; ///< flagged, its contour from the traced planes above and below
   /// Has a contour: traced, or interpolated between traced planes.
   bool Usable() const { return !flagged || interpolated; }
 };

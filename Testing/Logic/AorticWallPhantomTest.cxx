@@ -122,6 +122,40 @@ TEST(AorticWallPhantom, EccentricThrombus_CrescentOnItsSideAndTheLumenOffCentre)
   EXPECT_LT(s.thrombusVolumeMl, 120.0);
 }
 
+TEST(AorticWallPhantom, EllipticalSac_MajorAxisStretchedAndThrombusFillsItsEnds)
+{
+  PhantomParams p = WallParams();
+  p.thrombusMaxThicknessMm = 15.0;
+  p.sacAxisRatio = 1.2;
+  p.sacMajorAxis = PhantomSide::Left; // transverse
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  const PhantomSizing& s = phantom.truth.sizing;
+  // Mid-sac: semi-axes 27.5 × 1.2 = 33 mm across (left–right) and 27.5 mm front to back.
+  const double z = 60.0;
+  for (const double theta : { 90.0, 270.0 })
+  {
+    EXPECT_EQ(LabelAt(phantom, InPlane(z, theta, 33.0 - 0.75)), WallLabel) << theta; // mid-wall
+    EXPECT_EQ(LabelAt(phantom, InPlane(z, theta, 33.0 + 1.0)), TissueLabel) << theta;
+    EXPECT_EQ(LabelAt(phantom, InPlane(z, theta, 33.0 - 2.5)), ThrombusLabel) << theta; // the end filled
+  }
+  EXPECT_EQ(LabelAt(phantom, InPlane(z, 180.0, 27.5 - 0.75)), WallLabel);
+  EXPECT_EQ(LabelAt(phantom, InPlane(z, 180.0, 27.5 + 1.0)), TissueLabel);
+  // Dmax is the major axis (0.2 mm: the profile's widest level lies a little off mid-sac).
+  EXPECT_NEAR(s.outerMaxAneurysmDiameter, 66.0, 0.2);
+  // The lumen is the round phantom's: its diameters do not change.
+  EXPECT_NEAR(s.maxAneurysmDiameter, 2 * 18.5, 0.2);
+  // The truth's thrombus volume (the ellipse's inner area less the lumen's, 1° quadrature)
+  // against the voxels, within the round crescent's 2 %; and more than the round sac's.
+  const long thrombusVoxels = LabelCounts(phantom)[ThrombusLabel];
+  EXPECT_NEAR(thrombusVoxels * VoxelMl(phantom), s.thrombusVolumeMl, 0.02 * s.thrombusVolumeMl);
+  p.sacAxisRatio = 1.0;
+  EXPECT_GT(s.thrombusVolumeMl, GenerateAorticPhantom(p).truth.sizing.thrombusVolumeMl + 10.0);
+  // The thickest thrombus: the anterior crescent (15 mm) grows where the ellipse's stretch meets
+  // it off the front, by less than the stretch itself (33 − 27.5 = 5.5 mm).
+  EXPECT_GT(s.maxThrombusThicknessMm, 15.0);
+  EXPECT_LT(s.maxThrombusThicknessMm, 15.0 + 5.5);
+}
+
 TEST(AorticWallPhantom, ConcentricThrombus_RingAllRound)
 {
   PhantomParams p = WallParams();
@@ -223,6 +257,12 @@ TEST(AorticWallPhantom, WallOptionsWithoutAWall_InputError)
   p.thrombusMaxThicknessMm = 40.0; // leaves 26 − 20 = 6 mm of a 26 mm inner radius
   EXPECT_THROW(GenerateAorticPhantom(p), InputError);
   EXPECT_THROW(ParsePhantomSide("front", "thrombusSide"), InputError);
+  p = WallParams();
+  p.sacAxisRatio = 1.2; // an elliptical sac without thrombus: nothing fills the ends
+  EXPECT_THROW(GenerateAorticPhantom(p), InputError);
+  p.thrombusMaxThicknessMm = 10.0;
+  p.sacAxisRatio = 1.6;
+  EXPECT_THROW(GenerateAorticPhantom(p), InputError);
 }
 
 } // namespace
