@@ -1,7 +1,6 @@
 #include "Measurement/MeasureOuterWall.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 #include "Common/Format.h"
@@ -189,12 +188,13 @@ void MeasureOuterWall(const VesselWall& wall, const OuterWallLevels& levels, Mea
                   "(c) largest maximum caliper between the proximal site and the aortic bifurcation (Dmax)", out));
   // The caliper's ends on the arc no boundary showed on (a neighbour without a fat plane): the
   // width there is the fitted model's, estimated even where most of the circumference is traced.
-  if (widest && widest->Usable() && !out.values.back().estimated && !widest->supported.empty())
+  if (widest && !out.values.back().estimated && !widest->supported.empty())
   {
-    const std::array<int, 2> ends = widest->maxCaliperRays;
-    if (!widest->supported[std::size_t(ends[0])] || !widest->supported[std::size_t(ends[1])])
+    const bool first = widest->supported[std::size_t(widest->maxCaliperRays[0])],
+               second = widest->supported[std::size_t(widest->maxCaliperRays[1])];
+    if (!first || !second)
     {
-      const bool both = !widest->supported[std::size_t(ends[0])] && !widest->supported[std::size_t(ends[1])];
+      const bool both = !first && !second;
       out.values.back().estimated = true;
       out.warnings.push_back("maxAneurysmDiameter is estimated: " + std::string(both ? "both ends" : "one end") +
                              " of its caliper at " + FormatNumber(widest->abscissaMm) + " mm along the aorta " +

@@ -408,10 +408,11 @@ OuterWall SegmentOuterWall(const CtImage& ct,
     // ellipse fitted there to the circle's kept rays alone extrapolated 3–12 mm out.
     WallModel model;
     model.circle = circle;
-    int hidden = 0;
-    for (int k = 0; k < K && circle[2] > 0.0; ++k)
-      hidden += candidate[k] <= 0.0 || candidate[k] > RayCircle(circle, direction[k]) + params.hiddenBeyondMm ? 1 : 0;
-    if (circle[2] > 0.0 && double(hidden) >= params.hiddenArcShare * K)
+    const auto count = [](const std::vector<bool>& b) { return std::count(b.begin(), b.end(), true); };
+    std::vector<bool> hidden(K, false);
+    for (int k = 0; k < K; ++k)
+      hidden[k] = candidate[k] <= 0.0 || candidate[k] > RayCircle(circle, direction[k]) + params.hiddenBeyondMm;
+    if (circle[2] > 0.0 && double(count(hidden)) >= params.hiddenArcShare * K)
     {
       std::vector<bool> grown = kept;
       Ellipse ellipse;
@@ -435,7 +436,6 @@ OuterWall SegmentOuterWall(const CtImage& ct,
           break;
         grown = next;
       }
-      const auto count = [](const std::vector<bool>& b) { return std::count(b.begin(), b.end(), true); };
       if (fits && count(grown) >= count(kept) && double(count(grown)) >= params.ellipseMinimumSupport * K &&
           EllipseExplainsBetter(ellipse, grown, candidate, direction))
       {
@@ -458,9 +458,7 @@ OuterWall SegmentOuterWall(const CtImage& ct,
     }
     if (keptPoints.size() >= 3)
       model.circle = FitCircle(keptPoints);
-    int supported = 0;
-    for (int k = 0; k < K; ++k)
-      supported += kept[k] ? 1 : 0;
+    const auto supported = count(kept);
     plane.supportedFraction = double(supported) / K;
     plane.flagged = plane.supportedFraction < params.minimumSupport || model.circle[2] <= 0.0;
     plane.elliptical = model.elliptical;
@@ -470,15 +468,15 @@ OuterWall SegmentOuterWall(const CtImage& ct,
     plane.outerRadiusMm = plane.lumenRadiusMm;
     if (!plane.flagged && supported >= 3)
     {
-      // The fitted circle where a ray has no boundary; never inside the lumen, but a lumen that runs
-      // out along a branch (a renal artery) does not carry the wall with it: the lumen counts up
-      // to the circle only.
+      // The fitted model (circle or ellipse) where a ray has no boundary; never inside the lumen,
+      // but a lumen that runs out along a branch (a renal artery) does not carry the wall with it:
+      // the lumen counts up to the model only.
       Eigen::VectorXd raw(K), floor(K);
       for (int k = 0; k < K; ++k)
       {
-        const double onCircle = model.Along(direction[k]);
-        raw[k] = kept[k] ? candidate[k] : onCircle;
-        floor[k] = std::min(plane.lumenRadiusMm[k], onCircle);
+        const double onModel = model.Along(direction[k]);
+        raw[k] = kept[k] ? candidate[k] : onModel;
+        floor[k] = std::min(plane.lumenRadiusMm[k], onModel);
       }
       plane.outerRadiusMm = SmoothCircular(raw, params.smoothRays).cwiseMax(floor);
     }
