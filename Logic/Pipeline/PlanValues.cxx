@@ -91,6 +91,7 @@ const std::vector<std::string>& ReturnValueNames()
     "coveredOstia",
     "migrationRisk",
     "fitCheckPassed",
+    "notMeasured",
   };
   return names;
 }
@@ -135,11 +136,20 @@ std::vector<PlanValue> PlanReturnValues(const RepairPlan& plan)
   put(Boolean("migrationRisk", plan.fitCheck.migrationRisk, simulated));
   put(Boolean("fitCheckPassed", plan.fitCheck.Passed(), simulated));
 
+  // notMeasured, the last name, lists the values before it that the plan does not have.
   std::vector<PlanValue> values;
+  std::string notMeasured;
   for (const std::string& name : ReturnValueNames())
   {
+    if (name == "notMeasured")
+    {
+      values.push_back({ name, notMeasured.empty() ? "none" : notMeasured, true });
+      continue;
+    }
     const auto found = byName.find(name);
     values.push_back(found != byName.end() ? found->second : PlanValue{ name, "-1", false });
+    if (!values.back().measured)
+      notMeasured += (notMeasured.empty() ? "" : ",") + name;
     if (found != byName.end())
       byName.erase(found);
   }

@@ -6,6 +6,8 @@
 /// no graft simulated — is written as −1 (numbers), `none` (strings) or `false` (booleans), and
 /// flagged `measured = false` so that the front end can say so in a warning: Slicer's generic CLI
 /// panel keeps the previous run's value of any return parameter that is missing from the file.
+/// The last, `notMeasured`, names every value so flagged (comma-separated, or `none`): a signed
+/// value's real −1 (a conicity or an oversizing of −1 %) is told from "not measured" by it.
 /// Numbers carry up to 10 significant digits (FormatReturnValue).
 #pragma once
 

@@ -30,6 +30,7 @@ import html
 import io
 import json
 import math
+import re
 
 REPORT_FORMAT = "StentGraftPlanner.report/1"
 
@@ -54,6 +55,11 @@ WALL_TEXT = {OUTER_WALL: "outer wall", LUMEN: "lumen", "": ""}
 #: run) as -1 for a number, "none" for a text (Logic/Pipeline/PlanValues.h).
 NOT_MEASURED = "-1"
 NO_VALUE = "none"
+#: The return value that names, comma-separated, every other one the run does not have ("none": it
+#: has them all). It tells a signed value's real -1 (a conicity of -1 %) from "not measured"; a run
+#: of a CLI without it (empty, or a text that is no list of names) is read by the texts above and the
+#: inferences below.
+NOT_MEASURED_LIST = "notMeasured"
 
 
 def _number(name, unit, label, missing=NOT_MEASURED, wall=""):
@@ -208,15 +214,36 @@ def _toBool(text):
         str(text).strip().lower())
 
 
+def _readListedValues(getParameterAsString, notMeasured):
+    """The return values where the CLI named those it does not have: None for each of them and for
+    an empty or unreadable text; every other text is the value, -1 and "none" included."""
+    values = {}
+    for item in RETURN_VALUES:
+        text = (getParameterAsString(item.name) or "").strip()
+        if item.name in notMeasured:
+            values[item.name] = None
+        elif item.kind == "str":
+            values[item.name] = text or None
+        elif item.kind == "bool":
+            values[item.name] = _toBool(text)
+        else:
+            values[item.name] = _toFloat(text)
+    return values
+
+
 def readReturnValues(getParameterAsString):
     """The return values of a finished run.
 
     getParameterAsString: a function name -> str (``cliNode.GetParameterAsString`` in Slicer).
-    Returns name -> float, str, bool or None. None where the text is empty or unreadable, where the
-    CLI wrote its "not measured" text (-1, none) for a value that cannot take it
+    Returns name -> float, str, bool or None. None where the CLI names the value in its
+    ``notMeasured`` list (NOT_MEASURED_LIST) or the text is empty or unreadable; without that list (an
+    older CLI) also where the CLI wrote its "not measured" text (-1, none) for a value that cannot take it
     (``ReturnValue.missing``), for a computed value one of whose operands is None
     (``COMPUTED_FROM``), and for a false verdict one of whose quantities is None (``DECIDED_FROM``).
     """
+    listed = [name.strip() for name in (getParameterAsString(NOT_MEASURED_LIST) or "").split(",")]
+    if all(re.fullmatch(r"[A-Za-z][A-Za-z0-9]*", name) for name in listed):  # a list of names, or none
+        return _readListedValues(getParameterAsString, set(listed) - {NO_VALUE})
     values = {}
     for item in RETURN_VALUES:
         text = (getParameterAsString(item.name) or "").strip()

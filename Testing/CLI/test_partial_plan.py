@@ -27,6 +27,9 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import sem_rules  # noqa: E402
 from test_bad_input import bad_case, check, crop_above, fresh_dir, results, run, run_cli  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "StentGraftPlanner"))
+from StentGraftPlannerLib import Results  # noqa: E402
+
 LUMEN_BAR_MM = 1.5  # issue 13's lumen tolerance on slices thicker than 1.25 mm
 
 
@@ -96,6 +99,28 @@ def main():
     check(abs(float(values.get("proximalSealLength", "nan")) - float(whole.get("proximalSealLength", "nan"))) <= 4.0,
           f"cut 20 mm below: proximalSealLength {values.get('proximalSealLength')} within a ring spacing of the "
           f"whole scan's {whole.get('proximalSealLength')}")
+    # The not-measured contract (issue 32): the limbs' oversizings are signed (a real -1 % exists), so
+    # only the notMeasured list tells their -1 from a value. It names them and every other -1 above,
+    # not the measured proximal oversizing; the whole scan's list is "none"; and the panel reads
+    # through the return file: the listed values not measured, a signed value that is not listed a
+    # number — the whole scan's conicity, whatever its sign.
+    listed = set(values.get("notMeasured", "").split(","))
+    unlisted = ("proximalOversizing", "proximalNeckLumenDiameter", "mainBodyDiameter", "neckConicity")
+    check({"rightLimbOversizing", "leftLimbOversizing", "rightIliacLength", "proximalSiteToBifurcationLength"}
+          <= listed and not listed & set(unlisted),
+          "cut 20 mm below: notMeasured names the limbs' oversizings and the other -1s, not the measured values",
+          values.get("notMeasured"))
+    check(whole.get("notMeasured") == "none", "the whole scan's notMeasured is none", whole.get("notMeasured"))
+    panel = Results.readReturnValues(lambda name: values.get(name, ""))
+    panelWhole = Results.readReturnValues(lambda name: whole.get(name, ""))
+    check(panel["rightIliacLength"] is None and panel["rightLimbLength"] is None
+          and panel["proximalNeckLumenDiameter"] == float(values.get("proximalNeckLumenDiameter", "nan")),
+          "cut 20 mm below: the panel reads the listed values as not measured and the others as numbers",
+          f"{panel['rightIliacLength']} {panel['rightLimbLength']} {panel['proximalNeckLumenDiameter']}")
+    check(panelWhole["neckConicity"] is not None
+          and panelWhole["neckConicity"] == float(whole.get("neckConicity", "nan")),
+          "the whole scan: the panel reads the signed neck conicity as the number written",
+          f"{panelWhole['neckConicity']} vs {whole.get('neckConicity')}")
     check(values.get("fitCheckPassed") == "false" and values.get("withinIfu") == "false",
           "cut 20 mm below: fitCheckPassed and withinIfu false (the limbs are not known)",
           f"{values.get('fitCheckPassed')} / {values.get('withinIfu')}")

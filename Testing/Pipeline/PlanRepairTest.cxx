@@ -150,6 +150,8 @@ TEST_F(DefaultPhantomPlan, ReturnValues_EveryNameOnceInOrderAndMeasured)
     // values), the neck rules are decided, and a graft is simulated.
     EXPECT_TRUE(values[i].measured) << values[i].text;
   }
+  EXPECT_EQ(values.back().name, "notMeasured");
+  EXPECT_EQ(values.back().text, "none"); // it names no value
 }
 
 TEST(PlanRepair, StopsAtTheRequestedStage_LaterResultsEmptyAndValuesUnmeasured)
@@ -167,9 +169,22 @@ TEST(PlanRepair, StopsAtTheRequestedStage_LaterResultsEmptyAndValuesUnmeasured)
   EXPECT_GT(plan.centerlines.aorta.Size(), 0);
   EXPECT_EQ(plan.mesh.V.rows(), 0);
   EXPECT_TRUE(plan.rows.empty());
-  for (const PlanValue& v : PlanReturnValues(plan))
+  const std::vector<PlanValue> values = PlanReturnValues(plan);
+  std::string unmeasured;
+  for (const PlanValue& v : values)
   {
     SCOPED_TRACE(v.name);
+    if (v.name == "notMeasured")
+    {
+      // The last value names every other one not measured, in order (issue 32: a signed value's
+      // -1 is told from "not measured" by it).
+      EXPECT_TRUE(v.measured);
+      EXPECT_EQ(v.text, unmeasured);
+      EXPECT_EQ(&v, &values.back());
+      continue;
+    }
+    if (!v.measured)
+      unmeasured += (unmeasured.empty() ? "" : ",") + v.name;
     // The seed and the lumen's values are known once the lumen is segmented.
     const bool lumenValue = v.name == "seedUsed" || v.name == "seedSource" || v.name == "lumenVolumeMl" ||
                             v.name == "lowerHuUsed" || v.name == "upperHuUsed" || v.name == "edgeHuUsed";

@@ -73,6 +73,22 @@ class ReturnValuesTest(unittest.TestCase):
             values = Results.readReturnValues(lambda name: given.get(name, ""))
             self.assertIsNone(values["neckConicity"], missing)
 
+    def test_NotMeasuredList_DecidesWhichValuesAreMissing(self):
+        # The CLI names what it does not have (PlanValues.h): its -1 of a signed value is a number
+        # when not named, even without the diameters it is computed from; a named one is missing.
+        given = {"neckConicity": "-1", "rightIliacDiameter": "-1", "hostileNeck": "false",
+                 "recommendedDevice": "none", "notMeasured": "rightIliacDiameter,hostileNeck"}
+        values = Results.readReturnValues(lambda name: given.get(name, ""))
+        self.assertEqual(values["neckConicity"], -1.0)
+        self.assertIsNone(values["rightIliacDiameter"])
+        self.assertIsNone(values["hostileNeck"])  # a false verdict the CLI did not decide
+        self.assertEqual(values["recommendedDevice"], "none")  # a result: no family within its IFU
+        self.assertIsNone(values["proximalNeckDiameter"])  # not written at all
+        given["notMeasured"] = "none"
+        values = Results.readReturnValues(lambda name: given.get(name, ""))
+        self.assertEqual(values["rightIliacDiameter"], -1.0)  # the list says measured: a value
+        self.assertIs(values["hostileNeck"], False)
+
     def test_NegativeValueOfAMeasurableQuantity_IsKept(self):
         values = Results.readReturnValues(lambda name: "-2.5")
         self.assertEqual(values["neckConicity"], -2.5)  # a neck narrowing downward
