@@ -2,7 +2,7 @@
 # Installs what is missing, builds, and runs every test (GoogleTest unit tests, the SEM/Slicer
 # protocol tests of the CLIs), then the unit and CLI tests once more in a sanitizer build
 # (AddressSanitizer, UndefinedBehaviorSanitizer; SGP_SANITIZERS=0 skips it).
-# Usage: scripts/test.sh [ctest arguments…] (default: -LE benchmark)
+# Usage: scripts/test.sh [ctest arguments…] (default: -LE 'benchmark|sweep32')
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
@@ -15,9 +15,10 @@ sgp_build -DSGP_WERROR=$werror -DBUILD_TESTING=ON
 echo "== Running the tests"
 cd "$SGP_BUILD"
 # Benchmarks (CTest label `benchmark`) only when asked, e.g. scripts/test.sh -L benchmark:
-# their timings depend on the machine's load.
+# their timings depend on the machine's load. Issue 32's 60-draw sweep (label `sweep32`, about
+# 6 min) too: scripts/test.sh -L sweep32.
 if [ $# -eq 0 ]; then
-  set -- -LE benchmark
+  set -- -LE 'benchmark|sweep32'
 fi
 ctest --output-on-failure -j 2 "$@"
 
@@ -25,7 +26,7 @@ ctest --output-on-failure -j 2 "$@"
 # second folder (-O1 -g1: optimised as AddressSanitizer's documentation advises, with line tables
 # for the reports' file:line — half the compile time of RelWithDebInfo's -O2 -g); any report fails
 # the run. Only on the default run (no ctest arguments given), or with SGP_SANITIZERS=1.
-if [ "$#" -eq 2 ] && [ "$1" = "-LE" ] && [ "$2" = "benchmark" ] || [ "${SGP_SANITIZERS:-}" = "1" ]; then
+if [ "$#" -eq 2 ] && [ "$1" = "-LE" ] && [ "$2" = "benchmark|sweep32" ] || [ "${SGP_SANITIZERS:-}" = "1" ]; then
   if [ "${SGP_SANITIZERS:-}" != "0" ]; then
     echo "== Sanitizer build (address, undefined) in $SGP_ROOT/build-sanitize"
     SGP_BUILD="$SGP_ROOT/build-sanitize" sgp_build -DSGP_WERROR=$werror -DBUILD_TESTING=ON \
@@ -49,7 +50,7 @@ if [ "$#" -eq 2 ] && [ "$1" = "-LE" ] && [ "$2" = "benchmark" ] || [ "${SGP_SANI
     # and the fit check on healthy wall. The landmark variants (issue 31: Issue31/, 11 renal and 9
     # iliac phantoms) run the labelling the single-phantom tests here run (VisceralBranches,
     # ChestScanWithoutRenals, CutScanWithoutRenals).
-    repeated='^(AutomaticSeed\.|FindAorticSeed\.(RandomAnatomies|EveryTestPhantom)_|RealAnatomy/(AvtAutomaticSeed|AvtCutBelowTheBifurcation)\.|Deployment/|Deployment\.(SameNeck|DemoPhantom|Twelve|TwentySix|Sixteen)|Issue31/)'
+    repeated='^(AutomaticSeed\.|FindAorticSeed\.(RandomAnatomies|EveryTestPhantom)_|RealAnatomy/(AvtAutomaticSeed|AvtCutBelowTheBifurcation)\.|Deployment/|Deployment\.(SameNeck|DemoPhantom|Twelve|TwentySix|Sixteen)|Issue31/|Issue32/|Issue32\.)'
     ctest --output-on-failure -j 2 -L 'unit|cli' -E "$repeated"
   fi
 fi

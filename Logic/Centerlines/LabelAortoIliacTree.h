@@ -85,14 +85,17 @@ namespace sgp
 
 struct CenterlineParams
 {
-  double stepMm = 1.0;                    ///< resampling step, mm; in [0.1, 10]
-  double smoothingMm = 2.0;               ///< Gaussian σ along the vessel, mm; in [0, 20]
-  double directionReachMm = 20.0;         ///< how far along a branch its direction is taken, mm
-  double minimumBranchLengthMm = 30.0;    ///< vessel beyond a bifurcation branch, mm
-  double minimumIliacLengthMm = 60.0;     ///< vessel beyond each iliac at the bifurcation, mm
-  double minimumIliacDescentMm = 40.0;    ///< how far below the bifurcation each iliac ends, mm
-  double minimumIliacCoverageMm = 10.0;   ///< of a cut common iliac below B for a partial Y, mm
-  double minimumIliacRadiusRatio = 0.25;  ///< iliac radius / aortic radius at the bifurcation
+  double stepMm = 1.0;                  ///< resampling step, mm; in [0.1, 10]
+  double smoothingMm = 2.0;             ///< Gaussian σ along the vessel, mm; in [0, 20]
+  double directionReachMm = 20.0;       ///< how far along a branch its direction is taken, mm
+  double minimumBranchLengthMm = 30.0;  ///< vessel beyond a bifurcation branch, mm
+  double minimumIliacLengthMm = 60.0;   ///< vessel beyond each iliac at the bifurcation, mm
+  double minimumIliacDescentMm = 40.0;  ///< how far below the bifurcation each iliac ends, mm
+  double minimumIliacCoverageMm = 10.0; ///< of a cut common iliac below B for a partial Y, mm
+  /// Iliac radius / aortic radius at the bifurcation (lumen, inscribed). Was 0.25: an 8 mm common
+  /// iliac with a 1.6 mm wall (a 4.8 mm lumen) below a 25 mm distal aorta is 0.22 by the truth and
+  /// 0.18–0.20 on 2–3 mm slices, and its Y was refused (issue 32's sweep, 4 of 60 draws).
+  double minimumIliacRadiusRatio = 0.15;
   double internalIliacRadiusRatio = 0.35; ///< internal iliac radius / common iliac radius
   double minimumAortaToIliacRatio = 1.0;  ///< aorta's median radius / each iliac's, whole vessels
   double visceralRadiusMm = 2.5;          ///< an anterior branch this wide is visceral (below a Y, a trunk), mm

@@ -345,6 +345,30 @@ void LeaveOutWhatTheScanDoesNotHold(const MeasureContext& c, Measurements& out)
   }
 }
 
+/// (b) where its ring is not the vessel's cross-section: the aorta's axis turns more than
+/// BendAtLevelMaxDeg between one ring radius above and one below the level — a short neck angled
+/// into the sac, the level on the bend and the sac's shoulder. The plane ⊥ the axis there cuts the
+/// inner side of the bend obliquely and the outer side where the sac widens: on issue 32's sweep
+/// (seed 32) the (b) rings on such bends read 1.9–3.5 mm larger than the vessel's own diameter at
+/// that level, with turns of 43–59°; the rings within tolerance turned at most 32° (one 47°). The
+/// lumen and outer (b) and the conicity built on them are NaN, with one warning giving the turn.
+void LeaveOutBOnABend(const MeasureContext& c, const RingDiameters& b, Measurements& out)
+{
+  if (!c.site.Known() || !(b.meanMm > 0.0))
+    return;
+  const double s = c.sSite + secondDiameterDepthMm, r = 0.5 * b.meanMm;
+  const double cosine = TangentAt(c.tree.aorta, s - r).dot(TangentAt(c.tree.aorta, s + r));
+  const double turnDeg = std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / 3.14159265358979323846;
+  if (!(turnDeg > BendAtLevelMaxDeg))
+    return;
+  const std::string list = LeaveOut({ "neckLumenDiameter15mm", "neckDiameter15mm", "neckConicity" }, out);
+  out.warnings.push_back("(b) is not measured: 15 mm below the proximal site the aorta turns " +
+                         FormatNumber(turnDeg, 0) + " degrees within the ring's radius (" + FormatNumber(r, 1) +
+                         " mm) above and below the level (a short neck angled into the sac), so no plane there is the "
+                         "vessel's cross-section; " +
+                         list + " are left out.");
+}
+
 /// The site not known (ProximalSiteSource::None): every value measured from it is NaN — the neck's
 /// diameters, length, angles and conicity, the site-to-bifurcation length, and the thrombus and
 /// sac volumes and neck arcs that run from it — with one warning naming them. (c), (d) and the
@@ -443,6 +467,7 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
   MeasureIliacAccess(c, iliacOffset, out);
   LeaveOutWhatTheScanDoesNotHold(c, out);
   LeaveOutWhatNeedsTheSite(c, out);
+  LeaveOutBOnABend(c, b, out);
   return out;
 }
 

@@ -51,6 +51,10 @@
 /// warning per side, "Partial plan: the scan ends … mm below the aortic bifurcation along …",
 /// names the coverage and the values left out.
 ///
+/// **(b) on a bend**: where the aorta's axis turns more than BendAtLevelMaxDeg between one ring
+/// radius above and one below (b)'s level (a short neck angled into the sac), no plane there is
+/// the vessel's cross-section: the lumen and outer (b) and `neckConicity` are NaN, with a warning.
+///
 /// A value that cannot be measured is NaN and its absence is explained in `warnings`.
 /// Input: the labelled CenterlineTree, the StentMesh, the fitted surface V (#V×3), and the
 /// ProximalSite (all LPS mm). Output: Measurements, mm / degrees / % / ratio.
@@ -78,6 +82,10 @@ namespace sgp
 /// the rings near the bend tilt. MeasureAnatomyTest asserts this bound; device selection treats a
 /// neck-length margin within it as indeterminate.
 constexpr double NeckLengthUncertaintyMm = 2.0;
+
+/// Largest turn of the aorta's axis, degrees, over ± (b)'s ring radius at which (b) is measured
+/// (the file comment; LeaveOutBOnABend in MeasureAnatomy.cxx gives the evidence).
+constexpr double BendAtLevelMaxDeg = 40.0;
 
 struct Measurement
 {

@@ -16,6 +16,7 @@
 #include "Common/IndexBox.h"
 #include "Common/MaskGrid.h"
 #include "Common/Median.h"
+#include "Segmentation/ContinueThinBranches.h"
 
 namespace sgp
 {
@@ -1090,6 +1091,30 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
   crop.region = MaskGrid();
   std::vector<short>().swap(crop.hu);
   result.mask = PasteOnGrid(ct, region.lumen, crop.box);
+
+  // Step 7: narrow branches the window lost, followed on at the edge level (ContinueThinBranches.h).
+  if (params.thinBranchRadiusMm > 0.0)
+  {
+    ReportProgress(progress, 0.95, "Following narrow branches");
+    ThinBranchParams thin;
+    thin.maxRadiusMm = params.thinBranchRadiusMm;
+    thin.minReachMm = params.thinBranchReachMm;
+    thin.maxPieceMl = params.leakMinimumPieceMl;
+    const long firstSlice = crop.box.first[2], slices = static_cast<long>(edge.size());
+    const ThinBranchResult added = ContinueThinBranches(
+      ct, *result.mask, crop.box,
+      [&](long k) { return edge[static_cast<std::size_t>(std::clamp(k - firstSlice, 0L, slices - 1))]; },
+      [&](long k)
+      {
+        return sliceLevelHu.empty()
+                 ? stats.medianHu
+                 : sliceLevelHu[static_cast<std::size_t>(std::clamp(k, 0L, long(sliceLevelHu.size()) - 1))];
+      },
+      result.upperHu, result.calciumHu, thin);
+    result.thinBranchPieces = added.pieces;
+    result.thinBranchMl = added.addedMl;
+    result.volumeMl += added.addedMl;
+  }
   ReportProgress(progress, 1.0, "Done");
   return result;
 }

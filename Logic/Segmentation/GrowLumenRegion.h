@@ -57,6 +57,10 @@
 ///     tenth of a millimetre takes more of an enhancing vein behind a thin wall (2.1–3.5 % of it at 2 mm).
 ///  6. **Pits and holes:** single background voxels with five or six lumen faces (noise pits in the
 ///     boundary) and background cavities not connected to the outside become lumen.
+///  7. **Narrow branches** the window lost (blurred below its lower end: a narrow internal iliac
+///     on thick slices) are followed on at the edge level, piece by piece, where a piece is thin
+///     (no ball of `thinBranchRadiusMm`), reaches `thinBranchReachMm` away from the lumen and is
+///     smaller than `leakMinimumPieceMl` (ContinueThinBranches.h).
 ///
 /// Inputs: `ct` in HU on any grid (spacing, origin and direction are honoured); `seedLps` in LPS mm.
 /// Output: a LabelImage on the exact grid of `ct`, 1 = lumen, 0 = background; the window used;
@@ -114,6 +118,10 @@ struct RegionGrowingParams
   double tissueDepthMm = 5.0;        ///< where tissue is sampled outside the region, mm
   double leakMinimumPieceMl = 10.0;  ///< smaller cut-off pieces are vessels and stay, mL
   double darkLeakLimitMl = 5.0;      ///< dark interior volume that means a flood, mL
+  /// Step 7: a piece beyond the lumen at the edge level holding a ball this large is not a lost
+  /// narrow branch, mm; 0 disables the step (ContinueThinBranches.h).
+  double thinBranchRadiusMm = 3.0;
+  double thinBranchReachMm = 5.0; ///< step 7: a lost branch reaches this far from the lumen, mm
 };
 
 /// Checks every range and cross-parameter rule of `params`.
@@ -135,6 +143,8 @@ struct LumenSegmentation
   std::string windowSource;          ///< where the window came from and why, for the report
   double tissueHu = 0.0;             ///< median HU just outside the region
   double cutVolumeMl = 0.0;          ///< volume removed by the leak-cutting opening, mL
+  int thinBranchPieces = 0;          ///< step 7: narrow branches followed on at the edge level
+  double thinBranchMl = 0.0;         ///< their volume, mL (in volumeMl)
   std::vector<std::string> warnings; ///< one line each, without the "WARNING: " prefix
 };
 
