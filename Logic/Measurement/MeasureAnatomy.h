@@ -51,9 +51,10 @@
 /// warning per side, "Partial plan: the scan ends … mm below the aortic bifurcation along …",
 /// names the coverage and the values left out.
 ///
-/// **(b) on a bend**: where the aorta's axis turns more than BendAtLevelMaxDeg between one ring
-/// radius above and one below (b)'s level (a short neck angled into the sac), no plane there is
-/// the vessel's cross-section: the lumen and outer (b) and `neckConicity` are NaN, with a warning.
+/// **(b) on a bend**: where (b)'s level lies on a bend that is also the sac's shoulder (a short
+/// neck angled into the sac) and the ring's tilt alone could move it by more than BendTiltMaxMm
+/// (r·tan(θ/2)·|dD/ds|, θ the axis' turn over ± the ring's radius r), no plane there is the
+/// vessel's cross-section: the lumen and outer (b) and `neckConicity` are NaN, with a warning.
 ///
 /// A value that cannot be measured is NaN and its absence is explained in `warnings`.
 /// Input: the labelled CenterlineTree, the StentMesh, the fitted surface V (#V×3), and the
@@ -83,9 +84,10 @@ namespace sgp
 /// neck-length margin within it as indeterminate.
 constexpr double NeckLengthUncertaintyMm = 2.0;
 
-/// Largest turn of the aorta's axis, degrees, over ± (b)'s ring radius at which (b) is measured
-/// (the file comment; LeaveOutBOnABend in MeasureAnatomy.cxx gives the evidence).
-constexpr double BendAtLevelMaxDeg = 40.0;
+/// How far the tilt of (b)'s ring on a bend that is also the sac's shoulder may move it before
+/// (b) is not measured, mm: the lumen measurement's own tolerance (LeaveOutBOnABend in
+/// MeasureAnatomy.cxx gives the estimate and the evidence).
+constexpr double BendTiltMaxMm = 1.0;
 
 struct Measurement
 {

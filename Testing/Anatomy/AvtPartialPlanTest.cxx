@@ -76,6 +76,15 @@ void ExpectPartialPlanWithTheWholeScansAorticValues(const std::string& name, con
       EXPECT_TRUE(std::isnan(m.Value(level)) && std::isnan(whole.Value(level))) << level;
       continue;
     }
+    // (b) on a bend that is also the sac's shoulder is not measured (issue 32, MeasureAnatomy's
+    // BendTiltMaxMm): D2's aorta turns 93° within the ring's radius there. Then on both scans.
+    if (std::string(level) == "neckLumenDiameter15mm" && std::isnan(whole.Value(level)) &&
+        testing::AnyWarningContains(whole.warnings, "(b) is not measured"))
+    {
+      EXPECT_TRUE(std::isnan(m.Value(level))) << level;
+      EXPECT_TRUE(testing::AnyWarningContains(m.warnings, "(b) is not measured"));
+      continue;
+    }
     EXPECT_NEAR(m.Value(level), whole.Value(level), 0.3) << level;
   }
   EXPECT_NEAR(m.Value("distalNeckMinLumenDiameter"), whole.Value("distalNeckMinLumenDiameter"), 0.5);
