@@ -9,6 +9,7 @@
 #include "Common/Format.h"
 #include "Common/Median.h"
 #include "Measurement/MeasureOuterWall.h"
+#include "Measurement/SectionTilt.h"
 
 namespace sgp
 {
@@ -345,37 +346,27 @@ void LeaveOutWhatTheScanDoesNotHold(const MeasureContext& c, Measurements& out)
   }
 }
 
-/// (b) where its ring is not the vessel's cross-section: the level on a bend that is also the
-/// sac's shoulder (a short neck angled into the sac). The ring's plane ⊥ the axis is tilted
-/// against the planes one ring radius r above and below by half the axis' turn θ between them, and
-/// where the vessel widens at dD/ds a wall point of the ring moves along the vessel by about
-/// r·tan(θ/2), so the ring's tilt alone can move (b) by r·tan(θ/2)·|dD/ds| (dD/ds from the rings at
-/// the level ± r). Over BendTiltMaxMm — the measurement's own tolerance — no plane there is the
-/// vessel's cross-section. On issue 32's sweep (seed 32) the (b) rings that read 1.9–3.5 mm large
-/// had 2.0–5.0 mm by this estimate (turns 43–59°, dD/ds 0.4–0.8), those within tolerance 0–1.2 mm
-/// (one turned 47° where the diameter did not change: 0.3 mm). The lumen and outer (b) and the
-/// conicity built on them are NaN, with one warning giving the numbers.
-void LeaveOutBOnABend(const MeasureContext& c, const RingDiameters& b, Measurements& out)
+/// (b) where no plane is the vessel's cross-section (SectionTilt.h): the lumen's mean diameter in
+/// the plane ⊥ the aorta at (b)'s level changes by more than SectionTiltMaxMm when the plane is
+/// tilted by SectionTiltDeg — a bend that is also the sac's shoulder, below a short angled neck.
+/// The lumen and outer (b) and the conicity built on them are NaN, with one warning giving the
+/// numbers. Without the lumen's field (`lumen` null) nothing is checked.
+void LeaveOutBOnABend(const MeasureContext& c, const WallDistanceField* lumen, Measurements& out)
 {
-  if (!c.site.Known() || !(b.meanMm > 0.0))
+  const double b = out.Value("neckLumenDiameter15mm");
+  if (!lumen || !c.site.Known() || !(b > 0.0))
     return;
-  const double s = c.sSite + secondDiameterDepthMm, r = 0.5 * b.meanMm;
-  const double cosine = TangentAt(c.tree.aorta, s - r).dot(TangentAt(c.tree.aorta, s + r));
-  const double turn = std::acos(std::clamp(cosine, -1.0, 1.0));
-  const double slope = (c.trunk.At(s + r).meanMm - c.trunk.At(s - r).meanMm) / (2.0 * r);
-  const double tiltMm = r * std::tan(0.5 * turn) * std::abs(slope);
-  if (!(tiltMm > BendTiltMaxMm))
+  const double s = c.sSite + secondDiameterDepthMm;
+  const double change =
+    TiltSensitivityMm(*lumen, PositionAt(c.tree.aorta, s), TangentAt(c.tree.aorta, s), SectionTiltDeg);
+  if (!(change > SectionTiltMaxMm))
     return;
   const std::string list = LeaveOut({ "neckLumenDiameter15mm", "neckDiameter15mm", "neckConicity" }, out);
-  out.warnings.push_back("(b) is not measured: 15 mm below the proximal site the aorta turns " +
-                         FormatNumber(turn * 180.0 / 3.14159265358979323846, 0) +
-                         " degrees within the ring's radius (" + FormatNumber(r, 1) +
-                         " mm) above and below the level while it widens by " + FormatNumber(slope, 2) +
-                         " mm per mm (a short neck angled into the sac): the ring's tilt "
-                         "alone could move it by " +
-                         FormatNumber(tiltMm, 1) +
-                         " mm, so no plane there is the "
-                         "vessel's cross-section; " +
+  out.warnings.push_back("(b) is not measured: 15 mm below the proximal site the lumen's diameter changes by " +
+                         FormatNumber(change, 1) + " mm when the plane is tilted by " +
+                         FormatNumber(SectionTiltDeg, 0) +
+                         " degrees (a bend on the sac's shoulder below a short "
+                         "angled neck), so no plane there is the vessel's cross-section; " +
                          list + " are left out.");
 }
 
@@ -420,7 +411,8 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
                             const StentMesh& mesh,
                             const Points& V,
                             const ProximalSite& site,
-                            const VesselWall* wall)
+                            const VesselWall* wall,
+                            const WallDistanceField* lumen)
 {
   Measurements out;
   out.site = site;
@@ -477,7 +469,7 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
   MeasureIliacAccess(c, iliacOffset, out);
   LeaveOutWhatTheScanDoesNotHold(c, out);
   LeaveOutWhatNeedsTheSite(c, out);
-  LeaveOutBOnABend(c, b, out);
+  LeaveOutBOnABend(c, lumen, out);
   return out;
 }
 

@@ -77,7 +77,7 @@ void ExpectPartialPlanWithTheWholeScansAorticValues(const std::string& name, con
       continue;
     }
     // (b) on a bend that is also the sac's shoulder is not measured (issue 32, MeasureAnatomy's
-    // BendTiltMaxMm): D2's aorta turns 93° within the ring's radius there. Then on both scans.
+    // SectionTiltMaxMm): on both scans or neither.
     if (std::string(level) == "neckLumenDiameter15mm" && std::isnan(whole.Value(level)) &&
         testing::AnyWarningContains(whole.warnings, "(b) is not measured"))
     {

@@ -109,7 +109,7 @@ int ExpectSamePlan(const testing::SeedPhantom& variant, const PlanParams& params
               automatic.lumen.lowerHu, automatic.lumen.upperHu, worst, worstName.empty() ? "" : " in ",
               worstName.c_str());
   // (b) may be left out where its level lies on a bend (issue 32: MeasureAnatomy's
-  // BendTiltMaxMm), with its warning; the same in both plans (the isnan check above).
+  // SectionTiltMaxMm), with its warning; the same in both plans (the isnan check above).
   const bool bOnABend = std::isnan(user.measurements.Value("neckLumenDiameter15mm")) &&
                         std::any_of(user.warnings.begin(), user.warnings.end(),
                                     [](const std::string& w) { return w.rfind("(b) is not measured", 0) == 0; });

@@ -156,7 +156,7 @@ TEST_P(ShortAngledNeck, BWithinToleranceOrNotMeasuredWithTheReason)
   if (std::isnan(b))
   {
     // Not measured: the plan says why, and the conicity built on it is left out too.
-    EXPECT_TRUE(Warned(plan, "(b) is not measured: 15 mm below the proximal site the aorta turns"));
+    EXPECT_TRUE(Warned(plan, "(b) is not measured: 15 mm below the proximal site the lumen's diameter changes by"));
     EXPECT_TRUE(std::isnan(m.Value("neckConicity")));
     return;
   }
