@@ -350,8 +350,8 @@ void LeaveOutWhatTheScanDoesNotHold(const MeasureContext& c, Measurements& out)
 /// the plane ⊥ the aorta at (b)'s level changes by more than SectionTiltMaxMm when the plane is
 /// tilted by SectionTiltDeg — a bend that is also the sac's shoulder, below a short angled neck.
 /// The lumen and outer (b) and the conicity built on them are NaN, with one warning giving the
-/// numbers. Without the lumen's field (`lumen` null) nothing is checked.
-void LeaveOutBOnABend(const MeasureContext& c, const WallDistanceField* lumen, Measurements& out)
+/// numbers. Without the lumen mask (`lumen` null) nothing is checked.
+void LeaveOutBOnABend(const MeasureContext& c, const LabelImage* lumen, Measurements& out)
 {
   const double b = out.Value("neckLumenDiameter15mm");
   if (!lumen || !c.site.Known() || !(b > 0.0))
@@ -412,7 +412,7 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
                             const Points& V,
                             const ProximalSite& site,
                             const VesselWall* wall,
-                            const WallDistanceField* lumen)
+                            const LabelImage* lumen)
 {
   Measurements out;
   out.site = site;

@@ -51,14 +51,14 @@
 /// warning per side, "Partial plan: the scan ends … mm below the aortic bifurcation along …",
 /// names the coverage and the values left out.
 ///
-/// **(b) on a bend**: with the lumen's field given (`lumen`), where a tilt of (b)'s plane by
+/// **(b) on a bend**: with the lumen mask given (`lumen`), where a tilt of (b)'s plane by
 /// SectionTiltDeg changes the lumen's diameter there by more than SectionTiltMaxMm (a bend on the
 /// sac's shoulder below a short angled neck; SectionTilt.h), no plane there is the vessel's
 /// cross-section: the lumen and outer (b) and `neckConicity` are NaN, with a warning.
 ///
 /// A value that cannot be measured is NaN and its absence is explained in `warnings`.
 /// Input: the labelled CenterlineTree, the StentMesh, the fitted surface V (#V×3), and the
-/// ProximalSite (all LPS mm); optionally the traced wall and the lumen's WallDistanceField.
+/// ProximalSite (all LPS mm); optionally the traced wall and the lumen mask.
 /// Output: Measurements, mm / degrees / % / ratio.
 /// Errors: InputError when V does not match the mesh.
 #pragma once
@@ -72,7 +72,6 @@
 #include "Centerlines/ProximalSite.h"
 #include "Measurement/MeasureDiameters.h"
 #include "Stent/StentMesh.h"
-#include "Stent/WallDistanceField.h"
 #include "Wall/VesselWall.h"
 
 namespace sgp
@@ -146,6 +145,6 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
                             const Points& V,
                             const ProximalSite& site,
                             const VesselWall* wall = nullptr,
-                            const WallDistanceField* lumen = nullptr);
+                            const LabelImage* lumen = nullptr);
 
 } // namespace sgp

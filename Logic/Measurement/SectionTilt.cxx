@@ -20,23 +20,28 @@ Eigen::Vector3d Perpendicular(const Eigen::Vector3d& n)
   return n.cross(other).normalized();
 }
 
-/// Distance from `centre` along `direction` to where φ first reaches 0, mm.
-double BoundaryDistance(const WallDistanceField& lumen, const Point3& centre, const Eigen::Vector3d& direction)
+/// Whether the voxel holding `lps` is lumen (outside the image: not).
+bool InLumen(const LabelImage& lumen, const Point3& lps)
 {
-  double previous = lumen.Sample(centre);
-  for (double r = stepMm; r <= farthestMm; r += stepMm)
-  {
-    const double phi = lumen.Sample(centre + r * direction);
-    if (phi >= 0.0)
-      return previous < 0.0 ? r - stepMm * phi / (phi - previous) : r;
-    previous = phi;
-  }
-  return farthestMm;
+  LabelImage::PointType point;
+  for (unsigned a = 0; a < 3; ++a)
+    point[a] = lps[a];
+  LabelImage::IndexType index;
+  return lumen.TransformPhysicalPointToIndex(point, index) && lumen.GetPixel(index) != 0;
+}
+
+/// Distance from `centre` along `direction` to the first point outside the lumen, mm (0.1 mm steps).
+double BoundaryDistance(const LabelImage& lumen, const Point3& centre, const Eigen::Vector3d& direction)
+{
+  double r = 0.0;
+  while (r < farthestMm && InLumen(lumen, centre + (r + stepMm) * direction))
+    r += stepMm;
+  return r;
 }
 
 } // namespace
 
-double LumenMeanDiameterMm(const WallDistanceField& lumen,
+double LumenMeanDiameterMm(const LabelImage& lumen,
                            const Point3& centre,
                            const Eigen::Vector3d& normal,
                            int diameterCount)
@@ -52,10 +57,7 @@ double LumenMeanDiameterMm(const WallDistanceField& lumen,
   return sum / diameterCount;
 }
 
-double TiltSensitivityMm(const WallDistanceField& lumen,
-                         const Point3& centre,
-                         const Eigen::Vector3d& normal,
-                         double tiltDeg)
+double TiltSensitivityMm(const LabelImage& lumen, const Point3& centre, const Eigen::Vector3d& normal, double tiltDeg)
 {
   const Eigen::Vector3d n = normal.normalized(), u = Perpendicular(n), v = n.cross(u);
   const double here = LumenMeanDiameterMm(lumen, centre, n);

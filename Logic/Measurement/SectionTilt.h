@@ -11,29 +11,25 @@
 /// truth's diameter changed by 1.9–5.8 mm per 10° of tilt; the straight necks' by 0.2–0.4 mm.
 ///
 /// The lumen's mean diameter in the plane through `centre` ⊥ `normal`: the mean over
-/// `diameterCount` directions of the distance between the lumen boundary (φ = 0 of the
-/// WallDistanceField, linear between 0.1 mm steps, at most 100 mm out) on either side.
+/// `diameterCount` directions of the distance between the first points outside the lumen mask
+/// (the voxel holding the point, 0.1 mm steps, at most 100 mm out) on either side.
 /// TiltSensitivityMm: the largest change of that mean when `normal` is tilted by `tiltDeg` toward
 /// either side along two perpendicular directions (four tilts), mm.
 ///
-/// Input: the lumen's WallDistanceField, LPS mm; `normal` need not be unit (it is normalised).
+/// Input: the lumen mask (non-zero = lumen, any grid), LPS mm; `normal` need not be unit.
 /// Errors: none (a ray that never leaves the lumen ends at 100 mm).
 #pragma once
 
 #include "Common/Types.h"
-#include "Stent/WallDistanceField.h"
 
 namespace sgp
 {
 
-double LumenMeanDiameterMm(const WallDistanceField& lumen,
+double LumenMeanDiameterMm(const LabelImage& lumen,
                            const Point3& centre,
                            const Eigen::Vector3d& normal,
                            int diameterCount = 16);
 
-double TiltSensitivityMm(const WallDistanceField& lumen,
-                         const Point3& centre,
-                         const Eigen::Vector3d& normal,
-                         double tiltDeg);
+double TiltSensitivityMm(const LabelImage& lumen, const Point3& centre, const Eigen::Vector3d& normal, double tiltDeg);
 
 } // namespace sgp

@@ -158,7 +158,8 @@ void Measure(const WallDistanceField& wall, const PlanParams& params, const Stag
   report.Begin("MeasureAnatomy", "Measuring diameters, lengths and angles");
   // Measurements are always read off a measure-mode fit (paper, section 2.2).
   const Points measureV = plan.fitInMeasureMode ? plan.fit.V : FitActiveContour(plan.mesh, wall, params.measure).V;
-  plan.measurements = MeasureAnatomy(plan.centerlines, plan.mesh, measureV, plan.site, &plan.vesselWall, &wall);
+  plan.measurements =
+    MeasureAnatomy(plan.centerlines, plan.mesh, measureV, plan.site, &plan.vesselWall, plan.lumen.mask.GetPointer());
   for (const std::string& w : plan.measurements.warnings)
     if (w != plan.site.warning) // reported with the stent surface already
       report.Warn(w);
