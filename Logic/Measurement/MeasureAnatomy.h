@@ -89,8 +89,8 @@ constexpr double NeckLengthUncertaintyMm = 2.0;
 /// there by more than SectionTiltMaxMm (SectionTilt.h). 10°: the direction of an axis on a bend is
 /// not known better (the smoothed skeleton's tangent against the phantom's axis). 2 mm: twice the
 /// measurement's tolerance. On issue 32's sweep (seed 32) this left out the five (b)s that read
-/// 2.4–3.5 mm beyond the truth (changes 2.9–5.8 mm) and three within it (2.0–2.8 mm), and kept one
-/// 0.4 mm beyond tolerance plus allowance (1.9 mm); straight necks change by 0.2–0.4 mm.
+/// 2.4–3.5 mm beyond the truth (changes 2.9–5.8 mm) and three within it, and kept one 0.4 mm
+/// beyond tolerance plus allowance (a change of 1.9 mm); straight necks change by 0.2–0.4 mm.
 constexpr double SectionTiltDeg = 10.0;
 constexpr double SectionTiltMaxMm = 2.0;
 

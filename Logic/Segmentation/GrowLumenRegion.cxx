@@ -940,6 +940,8 @@ void ValidateRegionGrowingParams(const RegionGrowingParams& params)
   check("minimumHalfWindowHu", params.minimumHalfWindowHu, 0, 1000, "HU");
   check("refineDistanceMm", params.refineDistanceMm, 0, 10, "mm");
   check("tissueDepthMm", params.tissueDepthMm, 0, 20, "mm");
+  check("thinBranchRadiusMm", params.thinBranchRadiusMm, 0, 20, "mm");
+  check("thinBranchReachMm", params.thinBranchReachMm, 0, 50, "mm");
   if (params.thresholdMode == ThresholdMode::Manual && !(params.lowerHu < params.upperHu))
   {
     throw InputError("lowerHu (" + FormatNumber(params.lowerHu, 1) + " HU) must be less than upperHu (" +

@@ -59,7 +59,8 @@
 ///     boundary) and background cavities not connected to the outside become lumen.
 ///  7. **Narrow branches** the window lost (blurred below its lower end: a narrow internal iliac
 ///     on thick slices) are followed on at the edge level, piece by piece, where a piece is thin
-///     (no ball of `thinBranchRadiusMm`), reaches `thinBranchReachMm` away from the lumen and is
+///     (no ball of `thinBranchRadiusMm`), bright (its core above half-way between the edge and the
+///     lumen level), reaches `thinBranchReachMm` away from the lumen, meets no calcium rim and is
 ///     smaller than `leakMinimumPieceMl` (ContinueThinBranches.h).
 ///
 /// Inputs: `ct` in HU on any grid (spacing, origin and direction are honoured); `seedLps` in LPS mm.
