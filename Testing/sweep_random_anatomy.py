@@ -70,13 +70,42 @@ def rotation(axis, angle):
     return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
 
 
-def draw(rng):
-    """One anatomy and scan over issue 32's ranges, as SyntheticAorticPhantom flags."""
+def neck_and_scan_geometry(rng):
+    """The neck's diameter, the scan's axes (a rotation up to 25 deg, random flips; columns: the
+    i, j and k axes' directions) and its pixel size: the first draws of both ranges."""
     neck = rng.uniform(18, 30)
     axis = [rng.gauss(0, 1) for _ in range(3)]
     direction = rotation(axis, math.radians(rng.uniform(0, 25))) @ np.diag(
         [rng.choice([-1, 1]) for _ in range(3)])
-    pixel = rng.uniform(0.6, 0.95)
+    return neck, direction, rng.uniform(0.6, 0.95)
+
+
+def scan_flags(rng, pixel, direction):
+    """The scan's noise, blur, contrast, noise seed, spacing and axes, in both ranges' order."""
+    return {
+        "--noiseSigmaHu": "%.1f" % rng.uniform(8, 35),
+        "--blurSigmaMm": "%.2f" % rng.uniform(0.4, 1.1),
+        "--lumenHu": "%d" % rng.uniform(265, 470),
+        "--noiseSeed": "%d" % rng.randrange(1, 10 ** 6),
+        "--spacingMm": "%.3f,%.3f,%s" % (pixel, pixel, rng.choice(["0.625", "1", "1.25", "2", "2.5", "3"])),
+        # Columns of the matrix: the i, j and k axes' directions, one after another.
+        "--directionLps": ",".join("%.6f" % v for v in direction.T.flatten()),
+    }
+
+
+def add_bone_and_kidneys(rng, flags):
+    """Bone and kidneys, each in half the draws."""
+    if rng.random() < 0.5:
+        flags["--includeBone"] = None
+        flags["--boneGapMm"] = "%.1f" % rng.uniform(1.5, 8)
+    if rng.random() < 0.5:
+        flags["--includeKidneys"] = None
+        flags["--kidneyHu"] = "%d" % rng.uniform(150, 200)
+
+
+def draw(rng):
+    """One anatomy and scan over issue 32's ranges, as SyntheticAorticPhantom flags."""
+    neck, direction, pixel = neck_and_scan_geometry(rng)
     # Issue 32: a third of the necks short and angled (the level 15 mm below the site then lies on
     # the sac's shoulder); half the iliac pairs unequal by a ratio up to 2 (the narrower one's
     # internal iliac is the one the blur hides).
@@ -100,13 +129,7 @@ def draw(rng):
         "--rightIliacDiameterMm": "%.1f" % iliacs[0],
         "--leftIliacDiameterMm": "%.1f" % iliacs[1],
         "--neckAngleDeg": "%.1f" % beta,
-        "--noiseSigmaHu": "%.1f" % rng.uniform(8, 35),
-        "--blurSigmaMm": "%.2f" % rng.uniform(0.4, 1.1),
-        "--lumenHu": "%d" % rng.uniform(265, 470),
-        "--noiseSeed": "%d" % rng.randrange(1, 10 ** 6),
-        "--spacingMm": "%.3f,%.3f,%s" % (pixel, pixel, rng.choice(["0.625", "1", "1.25", "2", "2.5", "3"])),
-        # Columns of the matrix: the i, j and k axes' directions, one after another.
-        "--directionLps": ",".join("%.6f" % v for v in direction.T.flatten()),
+        **scan_flags(rng, pixel, direction),
     }
     # Issue 32: a wall in most draws, mostly in periaortic fat (then the outer wall is traced and
     # judged), with sac thrombus, eccentric or concentric, in three quarters of those.
@@ -123,22 +146,13 @@ def draw(rng):
             flags["--thrombusMaxThicknessMm"] = "%.1f" % rng.uniform(4, min(25, most))
             flags["--thrombusShape"] = "concentric" if concentric else "eccentric"
             flags["--thrombusSide"] = rng.choice(["anterior", "left", "posterior", "right"])
-    if rng.random() < 0.5:
-        flags["--includeBone"] = None
-        flags["--boneGapMm"] = "%.1f" % rng.uniform(1.5, 8)
-    if rng.random() < 0.5:
-        flags["--includeKidneys"] = None
-        flags["--kidneyHu"] = "%d" % rng.uniform(150, 200)
+    add_bone_and_kidneys(rng, flags)
     return flags
 
 
 def draw_issue13(rng):
     """One anatomy and scan over issue 13's ranges (no wall), as SyntheticAorticPhantom flags."""
-    neck = rng.uniform(18, 30)
-    axis = [rng.gauss(0, 1) for _ in range(3)]
-    direction = rotation(axis, math.radians(rng.uniform(0, 25))) @ np.diag(
-        [rng.choice([-1, 1]) for _ in range(3)])
-    pixel = rng.uniform(0.6, 0.95)
+    neck, direction, pixel = neck_and_scan_geometry(rng)
     flags = {
         "--neckDiameterMm": "%.1f" % neck,
         "--neckLengthMm": "%.1f" % rng.uniform(12, 40),
@@ -148,20 +162,9 @@ def draw_issue13(rng):
         "--rightIliacDiameterMm": "%.1f" % rng.uniform(8, 18),
         "--leftIliacDiameterMm": "%.1f" % rng.uniform(8, 18),
         "--neckAngleDeg": "%.1f" % rng.uniform(0, 60),
-        "--noiseSigmaHu": "%.1f" % rng.uniform(8, 35),
-        "--blurSigmaMm": "%.2f" % rng.uniform(0.4, 1.1),
-        "--lumenHu": "%d" % rng.uniform(265, 470),
-        "--noiseSeed": "%d" % rng.randrange(1, 10 ** 6),
-        "--spacingMm": "%.3f,%.3f,%s" % (pixel, pixel, rng.choice(["0.625", "1", "1.25", "2", "2.5", "3"])),
-        # Columns of the matrix: the i, j and k axes' directions, one after another.
-        "--directionLps": ",".join("%.6f" % v for v in direction.T.flatten()),
+        **scan_flags(rng, pixel, direction),
     }
-    if rng.random() < 0.5:
-        flags["--includeBone"] = None
-        flags["--boneGapMm"] = "%.1f" % rng.uniform(1.5, 8)
-    if rng.random() < 0.5:
-        flags["--includeKidneys"] = None
-        flags["--kidneyHu"] = "%d" % rng.uniform(150, 200)
+    add_bone_and_kidneys(rng, flags)
     return flags
 
 

@@ -104,6 +104,23 @@ std::vector<std::array<int, 3>> BallOffsets(const std::array<int, 3>& radiusIjk)
   return offsets;
 }
 
+std::vector<std::array<int, 3>> PhysicalBallOffsets(const std::array<double, 3>& spacingMm, double radiusMm)
+{
+  std::array<int, 3> reach{};
+  for (unsigned a = 0; a < 3; ++a)
+    reach[a] = static_cast<int>(std::floor(radiusMm / spacingMm[a] + 1e-9));
+  std::vector<std::array<int, 3>> ball;
+  for (int k = -reach[2]; k <= reach[2]; ++k)
+    for (int j = -reach[1]; j <= reach[1]; ++j)
+      for (int i = -reach[0]; i <= reach[0]; ++i)
+      {
+        const double x = i * spacingMm[0], y = j * spacingMm[1], z = k * spacingMm[2];
+        if (x * x + y * y + z * z <= radiusMm * radiusMm + 1e-9)
+          ball.push_back({ i, j, k });
+      }
+  return ball;
+}
+
 MaskGrid Erode(const MaskGrid& mask, const std::vector<std::array<int, 3>>& ball)
 {
   MaskGrid out(mask.size);

@@ -37,6 +37,10 @@ struct MaskGrid
 /// (a radius of 0 along an axis makes the ball flat along it). Includes (0, 0, 0).
 std::vector<std::array<int, 3>> BallOffsets(const std::array<int, 3>& radiusIjk);
 
+/// Offsets (di, dj, dk) of the voxels whose centres lie within `radiusMm` of a voxel's centre on a
+/// grid of `spacingMm` (mm per axis); includes (0, 0, 0).
+std::vector<std::array<int, 3>> PhysicalBallOffsets(const std::array<double, 3>& spacingMm, double radiusMm);
+
 /// Morphological erosion by `ball`: a voxel stays foreground when every ball offset from it is
 /// foreground and inside the box.
 MaskGrid Erode(const MaskGrid& mask, const std::vector<std::array<int, 3>>& ball);

@@ -205,23 +205,11 @@ ThinBranchResult ContinueThinBranches(const CtImage& ct,
   seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
 
   // The ball's offsets farthest first: in a thin piece the test fails on the first few.
-  std::vector<std::array<int, 3>> ball;
-  {
-    std::array<int, 3> reach{};
-    for (unsigned a = 0; a < 3; ++a)
-      reach[a] = static_cast<int>(std::floor(params.maxRadiusMm / spacing[a] + 1e-9));
-    for (int k = -reach[2]; k <= reach[2]; ++k)
-      for (int j = -reach[1]; j <= reach[1]; ++j)
-        for (int i = -reach[0]; i <= reach[0]; ++i)
-        {
-          const double x = i * spacing[0], y = j * spacing[1], z = k * spacing[2];
-          if (x * x + y * y + z * z <= params.maxRadiusMm * params.maxRadiusMm + 1e-9)
-            ball.push_back({ i, j, k });
-        }
-    const auto length = [&](const std::array<int, 3>& d)
-    { return std::pow(d[0] * spacing[0], 2) + std::pow(d[1] * spacing[1], 2) + std::pow(d[2] * spacing[2], 2); };
-    std::stable_sort(ball.begin(), ball.end(), [&](const auto& x, const auto& y) { return length(x) > length(y); });
-  }
+  std::vector<std::array<int, 3>> ball =
+    PhysicalBallOffsets({ spacing[0], spacing[1], spacing[2] }, params.maxRadiusMm);
+  const auto length = [&](const std::array<int, 3>& d)
+  { return std::pow(d[0] * spacing[0], 2) + std::pow(d[1] * spacing[1], 2) + std::pow(d[2] * spacing[2], 2); };
+  std::stable_sort(ball.begin(), ball.end(), [&](const auto& x, const auto& y) { return length(x) > length(y); });
 
   std::unordered_map<long, int> pieceOf; // every voxel a piece has taken, and that piece's number
   int pieceNumber = 0;

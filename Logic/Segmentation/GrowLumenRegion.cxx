@@ -664,25 +664,6 @@ std::array<int, 3> OpeningBallIjk(const CtImage::SpacingType& spacing, double ra
   return openIjk;
 }
 
-/// Offsets of the voxels within `radiusMm` of a voxel's centre, in millimetres on the grid's
-/// spacing (includes (0, 0, 0)).
-std::vector<std::array<int, 3>> PhysicalBall(const CtImage::SpacingType& spacing, double radiusMm)
-{
-  std::array<int, 3> reach{};
-  for (unsigned a = 0; a < 3; ++a)
-    reach[a] = static_cast<int>(std::floor(radiusMm / spacing[a] + 1e-9));
-  std::vector<std::array<int, 3>> ball;
-  for (int k = -reach[2]; k <= reach[2]; ++k)
-    for (int j = -reach[1]; j <= reach[1]; ++j)
-      for (int i = -reach[0]; i <= reach[0]; ++i)
-      {
-        const double x = i * spacing[0], y = j * spacing[1], z = k * spacing[2];
-        if (x * x + y * y + z * z <= radiusMm * radiusMm + 1e-9)
-          ball.push_back({ i, j, k });
-      }
-  return ball;
-}
-
 /// The region after leak cutting, and its interior (the opening's eroded seed component).
 struct CutRegion
 {
@@ -1077,7 +1058,8 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
   result.edgeHu = 0.5 * (stats.medianHu + result.tissueHu);
   const std::vector<double> edge = EdgeLevels(ct, region.lumen, crop.hu, tissueDepth, crop.box.first[2], sliceLevelHu,
                                               stats.medianHu, result.tissueHu);
-  RefineBoundary(region.lumen, crop.hu, refineSteps, PhysicalBall(spacing, params.refineDistanceMm), edge, result);
+  RefineBoundary(region.lumen, crop.hu, refineSteps,
+                 PhysicalBallOffsets({ spacing[0], spacing[1], spacing[2] }, params.refineDistanceMm), edge, result);
 
   result.volumeMl = region.lumen.CountForeground() * voxelMl;
   if (result.volumeMl > params.maximumLumenVolumeMl)
