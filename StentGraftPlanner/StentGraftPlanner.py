@@ -31,7 +31,7 @@ from slicer.ScriptedLoadableModule import (
 )
 from slicer.util import VTKObservationMixin
 
-from StentGraftPlannerLib import Appearance, CliRun, OrderList, Results, Settings
+from StentGraftPlannerLib import Appearance, CliRun, Outcome, Results, Settings
 
 
 class StentGraftPlanner(ScriptedLoadableModule):
@@ -213,7 +213,7 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
             self._run = self.logic.startPlanning(self._parameterNode, self.onRunFinished, self.onRunProgress)
             self.ui.progressBar.value = 0
             self.ui.progressBar.show()
-            self.ui.statusLabel.text = "Running StentGraftSimulation..."
+            self.ui.statusLabel.text = CliRun.progressText(0, "")
             self.updateGUIFromParameterNode()
 
     def onOpenReportButton(self):
@@ -225,19 +225,20 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
         if self._run is not None:
             self._run.cliNode.Cancel()
 
-    def onRunProgress(self, percent, status):
+    def onRunProgress(self, percent, text):
         self.ui.progressBar.value = percent
-        self.ui.statusLabel.text = status
+        self.ui.statusLabel.text = text
 
-    def onRunFinished(self, results, errorText):
+    def onRunFinished(self, outcome, results, errorText):
         self._run = None
         self.ui.progressBar.hide()
         self.updateGUIFromParameterNode()
-        if errorText:
-            self.ui.statusLabel.text = "The planning run failed."
-            slicer.util.errorDisplay("The planning run failed.\n\n" + errorText)
+        statusText, dialogText = CliRun.finishedMessage(outcome, errorText)
+        self.ui.statusLabel.text = statusText
+        if dialogText:
+            slicer.util.errorDisplay(dialogText)
+        if outcome != CliRun.COMPLETED:
             return
-        self.ui.statusLabel.text = "Done."
         self._reportHtmlPath = results.reportHtmlPath
         self.ui.openReportButton.enabled = self._reportHtmlPath is not None
         self.ui.openReportButton.toolTip = self._reportHtmlPath or "The run wrote no visual report."
@@ -245,19 +246,6 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
         self.ui.orderListLabel.text = results.orderListHtml
         self.ui.recommendationLabel.text = results.recommendationHtml
         self.ui.resultsCollapsibleButton.collapsed = False
-
-
-class PlanningResults:
-    """What a finished run returned: return values, the parsed report, the results table's rows and
-    the panel text (the order list first, then the recommendation and the IFU details)."""
-
-    def __init__(self, values, report, measurementRows):
-        self.values = values
-        self.report = report
-        self.reportHtmlPath = None  # the visual report, when the run wrote one
-        self.tableRows = Results.resultsTableRows(values, measurementRows)
-        self.orderListHtml = OrderList.orderListHtml(report, values)
-        self.recommendationHtml = Results.recommendationHtml(report)
 
 
 def _tableRows(tableNode):
@@ -301,10 +289,10 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
         return node
 
     def cliParameters(self, parameterNode, reportPath, reportHtmlPath=None):
+        """The CLI's parameters; the settings are checked before any output node is created."""
         nodes, pointCounts = {}, {}
         for role in Settings.NODE_ROLES:
             if role.channel == "output":
-                nodes[role.name] = self._referencedNode(parameterNode, role.name, role.nodeClass, role.defaultName)
                 continue
             node = parameterNode.GetNodeReference(role.name)
             nodes[role.name] = node
@@ -312,8 +300,10 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
                 # Slicer sends the first selected control point of a non-multiple <point>.
                 selected = [i for i in range(node.GetNumberOfControlPoints()) if node.GetNthControlPointSelected(i)]
                 pointCounts[role.name] = len(selected)
-        return Settings.buildCliParameters(self.settings(parameterNode), nodes, pointCounts, reportPath,
-                                           reportHtmlPath)
+        return Settings.cliParametersCreatingOutputs(
+            self.settings(parameterNode), nodes, pointCounts,
+            lambda role: self._referencedNode(parameterNode, role.name, role.nodeClass, role.defaultName),
+            reportPath, reportHtmlPath)
 
     def _newReportHtmlPath(self, parameterNode):
         """The visual report's path: the reportFolder setting, else Slicer's temporary folder."""
@@ -327,7 +317,8 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
         return path
 
     def startPlanning(self, parameterNode, onFinished, onProgress=None):
-        """Start the CLI in the background; onFinished(results, errorText) is called once it ends."""
+        """Start the CLI in the background; onFinished(outcome, results, errorText) is called once it ends
+        (outcome: CliRun.COMPLETED with results, CANCELLED, or FAILED with the error text)."""
         reportPath = self._newReportPath()
         reportHtmlPath = self._newReportHtmlPath(parameterNode)
         try:
@@ -341,19 +332,23 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
         def finish():
             if run.abandoned:  # the scene closed after this finish was scheduled
                 return
-            results, errorText = None, None
+            outcome, results, errorText = CliRun.runOutcome(cliNode.GetStatus()), None, None
             try:
-                results = self.finishPlanning(run)
+                if outcome == CliRun.FAILED:
+                    errorText = "StentGraftSimulation failed:\n" + (cliNode.GetErrorText() or "(no error text)")
+                elif outcome == CliRun.COMPLETED:
+                    results = self.finishPlanning(run)
             except Exception as error:
-                errorText = str(error)
+                outcome, errorText = CliRun.FAILED, str(error)
             finally:
                 self._cleanup(run)
-            onFinished(results, errorText)
+            onFinished(outcome, results, errorText)
 
         def onModified(caller, event):
             step = run.step()
             if step == CliRun.PROGRESS and onProgress is not None:
-                onProgress(cliNode.GetProgress(), cliNode.GetStatusString())
+                onProgress(CliRun.progressText(cliNode.GetProgress(),
+                                               CliRun.stageMessage(cliNode.GetModuleDescriptionAsString())))
             elif step == CliRun.FINISH:
                 # Finish outside the CLI node's own event: the node is removed from the scene there.
                 qt.QTimer.singleShot(0, finish)
@@ -392,16 +387,20 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
             os.remove(run.reportPath)
 
     def finishPlanning(self, run):
+        """The results of a run whose CLI node has ended; RuntimeError with the CLI's error text when
+        it failed, or saying so when it was cancelled."""
         cliNode = run.cliNode
-        if cliNode.GetStatus() & cliNode.ErrorsMask:
+        outcome = CliRun.runOutcome(cliNode.GetStatus())
+        if outcome == CliRun.FAILED:
             raise RuntimeError("StentGraftSimulation failed:\n" + (cliNode.GetErrorText() or "(no error text)"))
-        if cliNode.GetStatus() == cliNode.Cancelled:
+        if outcome == CliRun.CANCELLED:
             raise RuntimeError("The planning run was cancelled.")
         with open(run.reportPath) as reportFile:
-            report = Results.parseReport(reportFile.read())
-        values = Results.withReportVerdicts(Results.readReturnValues(cliNode.GetParameterAsString), report)
-        results = PlanningResults(values, report, _tableRows(run.parameterNode.GetNodeReference("outputMeasurements")))
-        results.reportHtmlPath = run.reportHtmlPath if run.reportHtmlPath and os.path.exists(run.reportHtmlPath) else None
+            reportText = reportFile.read()
+        reportHtmlPath = run.reportHtmlPath if run.reportHtmlPath and os.path.exists(run.reportHtmlPath) else None
+        results = Outcome.planningResults(reportText, cliNode.GetParameterAsString,
+                                          _tableRows(run.parameterNode.GetNodeReference("outputMeasurements")),
+                                          reportHtmlPath)
         self.placeAutomaticSeed(run.parameterNode, Results.automaticSeed(cliNode.GetParameterAsString))
         self.showOutputs(run.parameterNode)
         self.showDiameterProfile(run.parameterNode)
@@ -581,10 +580,13 @@ class StentGraftPlannerTest(ScriptedLoadableModuleTest):
         self.test_NoSeed_TheCliFindsTheAortaAndThePanelPlacesTheSeed()
         self.setUp()
         self.test_SeedOutsideImage_RaisesWithCliErrorText()
+        self.setUp()
+        self.test_NoDeviceFits_TheRunCompletesAndSaysWhy()
 
-    def _phantom(self):
+    def _phantom(self, **anatomy):
         """A noisy 0.8 x 0.8 x 1.0 mm phantom with unequal iliacs (a right/left swap cannot pass), a
-        vessel wall and an eccentric sac thrombus (outer wall and lumen differ everywhere)."""
+        vessel wall and an eccentric sac thrombus (outer wall and lumen differ everywhere); anatomy
+        overrides its parameters."""
         volume = slicer.mrmlScene.AddNewNodeByClass("vtkMRMLScalarVolumeNode", "Phantom CT")
         truthPath = os.path.join(slicer.app.temporaryPath, "StentGraftPlannerTest-truth.json")
         parameters = {
@@ -596,6 +598,7 @@ class StentGraftPlannerTest(ScriptedLoadableModuleTest):
             "wallThicknessMm": 1.5,
             "thrombusMaxThicknessMm": 10.0,
         }
+        parameters.update(anatomy)
         cliNode = slicer.cli.runSync(slicer.modules.syntheticaorticphantom, None, parameters)
         try:
             self.assertFalse(cliNode.GetStatus() & cliNode.ErrorsMask, cliNode.GetErrorText())
@@ -700,6 +703,20 @@ class StentGraftPlannerTest(ScriptedLoadableModuleTest):
         lumen.GetRASToIJKMatrix(rasToIjk)
         ijk = [int(round(c)) for c in rasToIjk.MultiplyPoint(ras + [1.0])[:3]]
         self.assertEqual(slicer.util.arrayFromVolume(lumen)[ijk[2], ijk[1], ijk[0]], 1)
+
+    def test_NoDeviceFits_TheRunCompletesAndSaysWhy(self):
+        # Issue 33 item 1: a 36 mm neck (outer) is wider than every main body within 10-20 %.
+        volume, truth, seedRas = self._phantom(neckDiameterMm=36.0, maxAneurysmDiameterMm=60.0, tissueHu=-100.0)
+        logic, parameterNode = self._parameterNode(volume, seedRas)
+        results = logic.runPlanning(parameterNode)  # a RuntimeError if Slicer marked the run failed
+        self.assertIsNone(results.values["mainBodyDiameter"])
+        self.assertAlmostEqual(results.values["proximalNeckDiameter"], truth["sizing"]["outerProximalNeckDiameter"],
+                               delta=1.5)
+        self.assertIn("No stent graft was simulated", results.recommendationHtml)
+        self.assertGreaterEqual(parameterNode.GetNodeReference("outputMeasurements").GetNumberOfRows(), 6)
+        self.assertGreaterEqual(parameterNode.GetNodeReference("outputCenterlines").GetPolyData().GetNumberOfCells(), 3)
+        self.assertEqual(parameterNode.GetNodeReference("outputSimulatedStentModel").GetPolyData().GetNumberOfPoints(), 0)
+        self.assertEqual(self._cliNodeCount(), 0)
 
     def test_SeedOutsideImage_RaisesWithCliErrorText(self):
         volume, truth, seedRas = self._phantom()

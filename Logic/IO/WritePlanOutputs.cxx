@@ -47,6 +47,11 @@ nlohmann::json PlanReportJson(const RepairPlan& plan, const PlanRunInfo& run)
   report["device"] = DeviceSelectionToJson(plan.selection);
   report["device"]["simulated"] =
     plan.HasGraft() ? nlohmann::json(plan.selection.families[plan.simulatedFamily].family) : nlohmann::json(nullptr);
+  // Why no graft was simulated (the simulated model is then empty); null when one was.
+  report["device"]["notSimulated"] =
+    plan.HasGraft()
+      ? nlohmann::json(nullptr)
+      : nlohmann::json(plan.notSimulatedReason.empty() ? "No graft was simulated" : plan.notSimulatedReason);
   report["deployment"] = DeploymentToJson(plan);
   report["fitCheck"] = plan.HasGraft() ? FitCheckToJson(plan.fitCheck) : nlohmann::json(nullptr);
   const VesselWall& wall = plan.vesselWall;
@@ -114,7 +119,6 @@ PlanRequest PlanRequestFor(const PlanOutputPaths& paths)
   else
     request.through = PlanStage::Segmentation;
   request.initialSurfaceValues = !paths.initialStentModel.empty();
-  request.requireSimulatedGraft = !paths.simulatedStentModel.empty();
   request.wallLabelMap = !paths.wallLabelMap.empty();
   request.ctAroundLumen = straightened || !paths.reportHtml.empty();
   return request;
@@ -155,7 +159,11 @@ void WritePlanOutputs(const RepairPlan& plan,
   {
     Require(plan, PlanStage::Device, "outputSimulatedStentModel");
     if (!plan.HasGraft())
-      throw std::logic_error("WritePlanOutputs: outputSimulatedStentModel was asked for, but no graft was simulated");
+      WriteNotSimulatedModel(plan.notSimulatedReason.empty() ? "No graft was simulated" : plan.notSimulatedReason,
+                             outputs.Stage(paths.simulatedStentModel));
+  }
+  if (!paths.simulatedStentModel.empty() && plan.HasGraft())
+  {
     const GraftLayout& layout = plan.graft.layout;
     Eigen::VectorXd role(layout.component.size());
     for (Eigen::Index i = 0; i < role.size(); ++i)

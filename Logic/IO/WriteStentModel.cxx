@@ -6,7 +6,9 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkFieldData.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 
 #include "IO/WriteModel.h"
 
@@ -64,6 +66,18 @@ void WriteStentModel(const StentMesh& mesh,
       array->InsertNextValue(values[i]);
     polyData->GetPointData()->AddArray(array);
   }
+  WriteModelLps(polyData, path);
+}
+
+void WriteNotSimulatedModel(const std::string& reason, const std::string& path)
+{
+  vtkNew<vtkPolyData> polyData;
+  vtkNew<vtkPoints> points;
+  polyData->SetPoints(points);
+  vtkNew<vtkStringArray> why;
+  why->SetName("NotSimulated");
+  why->InsertNextValue(reason);
+  polyData->GetFieldData()->AddArray(why);
   WriteModelLps(polyData, path);
 }
 

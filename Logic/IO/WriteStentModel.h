@@ -30,4 +30,9 @@ void WriteStentModel(const StentMesh& mesh,
                      const std::vector<std::pair<std::string, Eigen::VectorXd>>& extra,
                      const std::string& path);
 
+/// A model with no points, standing for a stent graft that was not simulated: its field data holds
+/// one string array `NotSimulated` with `reason` (why there is no graft), and `SPACE` = `LPS`.
+/// Slicer loads it as an empty model; a plan without a fitting device is a result, not an error.
+void WriteNotSimulatedModel(const std::string& reason, const std::string& path);
+
 } // namespace sgp

@@ -266,11 +266,11 @@ void SimulateTheMainBodyOnly(const WallDistanceField& wall,
   const int chosen = FamilyForMainBody(plan.selection);
   if (chosen < 0)
   {
-    report.Warn("The plan is partial: the scan ends above the iliac landing zones, so the limbs cannot be sized, "
-                "and no catalogue main body fits the neck (" +
-                plan.selection.summary +
-                "); no graft is simulated, so its sizes, seal lengths, oversizing and fit "
-                "check are not available.");
+    plan.notSimulatedReason = "The plan is partial: the scan ends above the iliac landing zones, so the limbs cannot "
+                              "be sized, and no catalogue main body fits the neck (" +
+                              plan.selection.summary + ")";
+    report.Warn(plan.notSimulatedReason +
+                "; no graft is simulated, so its sizes, seal lengths, oversizing and fit check are not available.");
     return;
   }
   report.Begin("SimulateGraft", "Simulating the chosen main body in the aorta (partial plan)");
@@ -373,7 +373,6 @@ void WarnSizedOnLumen(const DeviceSelection& selection, const StageReporter& rep
 }
 
 void ChooseAndSimulateDevice(const WallDistanceField& wall,
-                             const PlanRequest& request,
                              const PlanParams& params,
                              const StageReporter& report,
                              RepairPlan& plan)
@@ -394,12 +393,9 @@ void ChooseAndSimulateDevice(const WallDistanceField& wall,
   AddOrderRows(plan);
   if (!siteKnown)
   {
-    const std::string why = "The proximal implantation site is not known (no renal artery in view)";
-    if (request.requireSimulatedGraft)
-      throw AlgorithmError(why + ", so there is no deployment target and no graft to simulate for "
-                                 "outputSimulatedStentModel; give --lowestRenalOstium at the lower edge of the lowest "
-                                 "renal artery's ostium.");
-    report.Warn(why + ": no deployment target is set and no graft is simulated; give --lowestRenalOstium.");
+    plan.notSimulatedReason = "The proximal implantation site is not known (no renal artery in view), so there is "
+                              "no deployment target";
+    report.Warn(plan.notSimulatedReason + ": no graft is simulated; give --lowestRenalOstium.");
     return;
   }
   const DeviceConfiguration* configuration = plan.Configuration();
@@ -414,22 +410,16 @@ void ChooseAndSimulateDevice(const WallDistanceField& wall,
                            std::isnan(plan.measurements.Value("leftIliacLumenDiameter"));
   if (plan.simulatedFamily < 0 && plan.centerlines.Partial() && limbUnsized)
   {
-    if (request.requireSimulatedGraft)
-      throw AlgorithmError("The plan is partial: the scan ends above the iliac landing zones, so the limbs cannot be "
-                           "sized and no graft is simulated for outputSimulatedStentModel; give a scan that covers "
-                           "the common iliac arteries to their bifurcations.");
     SimulateTheMainBodyOnly(wall, params, report, plan);
     return;
   }
   if (plan.simulatedFamily < 0)
   {
-    const std::string why = "No catalogue device has a main body and both limbs within the oversizing ranges (" +
-                            plan.selection.summary + ")";
-    if (request.requireSimulatedGraft)
-      throw AlgorithmError(why + ", so there is no graft to simulate for outputSimulatedStentModel; widen "
-                                 "proximalOversizingRange or limbOversizingRange, or force one with --device.");
-    report.Warn(why + "; no graft was simulated, so its sizes, seal lengths, oversizing and fit check are not "
-                      "available.");
+    plan.notSimulatedReason = "No catalogue device has a main body and both limbs within the oversizing ranges (" +
+                              plan.selection.summary + ")";
+    report.Warn(plan.notSimulatedReason + "; no graft was simulated, so its sizes, seal lengths, oversizing and fit "
+                                          "check are not available (widen proximalOversizingRange or "
+                                          "limbOversizingRange, or force a device with --device).");
     return;
   }
   // The lengths could not be configured: the chosen diameters on the measured landing zones.
@@ -565,7 +555,7 @@ RepairPlan PlanRepair(CtImage::ConstPointer ct,
   if (request.through < PlanStage::Device)
     return plan;
 
-  ChooseAndSimulateDevice(wall, request, params, report, plan);
+  ChooseAndSimulateDevice(wall, params, report, plan);
   plan.reached = PlanStage::Device;
   return plan;
 }

@@ -20,8 +20,8 @@
 /// The simulated graft expands against the lumen (it presses on the thrombus, not through it);
 /// sizing uses the diameters each family's IFU names (outer wall for the shipped catalogue).
 /// A **partial plan** (the scan ends 10–40 mm below the bifurcation: LabelAortoIliacTree.h,
-/// MeasureAnatomy.h) has no limb sizes, so no graft is simulated: a warning says so, the limb
-/// checks are indeterminate, and the fit check is not available.
+/// MeasureAnatomy.h) has no limb sizes: the main body alone is simulated, for the proximal part of
+/// the fit check; a warning says so, and the limb checks are indeterminate.
 ///
 /// Memory: the CT is taken by pointer and this function drops its reference once the lumen is
 /// segmented, keeping (when the plan goes on to the measurements) only a crop around the lumen,
@@ -31,8 +31,8 @@
 ///
 /// Frames and units: every point LPS mm, diameters and lengths mm, angles degrees.
 /// Errors: InputError and AlgorithmError from the stages (their messages name the value seen and
-/// what was expected), and an AlgorithmError when `requireSimulatedGraft` is set and no family
-/// has a main body and both limbs within the oversizing ranges (or the plan is partial). On an exception nothing is
+/// what was expected). A plan with no graft to simulate (no family fits, the site unknown) is a
+/// result, not an error: RepairPlan::notSimulatedReason says why. On an exception nothing is
 /// returned; warnings already reported through PlanObserver::warn stay reported.
 #pragma once
 
@@ -77,14 +77,12 @@ struct PlanRequest
   PlanStage through = PlanStage::Device;
   /// The initial surface's per-vertex radius and wall distance (only an output of it needs them).
   bool initialSurfaceValues = false;
-  /// An AlgorithmError when there is no graft to simulate (the simulated graft was asked for).
-  bool requireSimulatedGraft = false;
   /// The user's lowest renal ostium (LPS mm); empty: found from the renal branches.
   std::optional<Point3> lowestRenalOstiumLps;
   /// The wall label map (WallLabelMap: lumen, thrombus and wall, calcium), when the plan reaches
   /// the measurements.
-  bool wallLabelMap =
-    false; /// Keep the CT crop around the lumen (the wall stage's) in RepairPlan::ctAroundLumen, for the
+  bool wallLabelMap = false;
+  /// Keep the CT crop around the lumen (the wall stage's) in RepairPlan::ctAroundLumen, for the
   /// views a report draws; needs a plan that reaches the measurements.
   bool ctAroundLumen = false;
 };
@@ -160,6 +158,9 @@ struct RepairPlan
   std::array<double, 3> graftDiametersMm{ 0.0, 0.0, 0.0 };
   DeployedGraft graft; ///< the simulated graft: its layout (components per vertex) and fitted surface
   FitCheck fitCheck;
+  /// Why no graft was simulated (a sentence without a final full stop), when the plan reached the
+  /// device stage without one; else empty.
+  std::string notSimulatedReason;
 
   /// Every warning, in the order they arose (also passed to PlanObserver::warn).
   std::vector<std::string> warnings;

@@ -95,3 +95,53 @@ class PlanningRun:
         self.removeObservers()
         if self.cliNode.IsBusy():
             self.cliNode.Cancel()
+
+
+#: How a run ended (``runOutcome``).
+COMPLETED, CANCELLED, FAILED = "completed", "cancelled", "failed"
+
+#: vtkMRMLCommandLineModuleNode's status bits (Libs/MRML/CLI/vtkMRMLCommandLineModuleNode.h), for
+#: fakes and for a node whose class attributes are not at hand.
+STATUS_CANCELLED, STATUS_COMPLETED, STATUS_ERRORS_MASK = 0x08, 0x20, 0x40
+
+
+def runOutcome(status):
+    """How a CLI node that is no longer busy ended, from its ``GetStatus()``: CANCELLED (the user's
+    Cancel, or a closing scene), FAILED (Completed with the errors bit: a non-zero exit, an output
+    Slicer could not load, or a status that is not Completed) or COMPLETED."""
+    if status & STATUS_CANCELLED:
+        return CANCELLED
+    if status & STATUS_ERRORS_MASK or not status & STATUS_COMPLETED:
+        return FAILED
+    return COMPLETED
+
+
+def finishedMessage(outcome, errorText=""):
+    """The panel's status line and, for a failure only, the text of the error dialog (else None)."""
+    if outcome == CANCELLED:
+        return "The planning run was cancelled; nothing was loaded.", None
+    if outcome == FAILED:
+        return "The planning run failed.", "The planning run failed.\n\n" + (errorText or "(no error text)")
+    return "Done.", None
+
+
+#: The line of ``GetModuleDescriptionAsString()`` that holds the CLI's latest stage comment (SEM's
+#: ModuleProcessInformation printed: "  ProgressMessage: <text>"; Slicer copies the last
+#: <filter-comment> there, or the last <filter-name> when a stage has no comment).
+_PROGRESS_MESSAGE = "ProgressMessage:"
+
+
+def stageMessage(moduleDescriptionText):
+    """The stage the CLI last reported (its <filter-comment>, e.g. "Segmenting the lumen"), read from
+    a CLI node's ``GetModuleDescriptionAsString()``; "" before the first stage. (The message itself is
+    in SEM's ModuleProcessInformation, which Slicer's Python does not wrap.)"""
+    for line in (moduleDescriptionText or "").splitlines():
+        stripped = line.strip()
+        if stripped.startswith(_PROGRESS_MESSAGE):
+            return stripped[len(_PROGRESS_MESSAGE):].strip().strip('"').strip()
+    return ""
+
+
+def progressText(percent, stage):
+    """The panel's line while the CLI runs: the stage it reports and the overall percentage."""
+    return "%s... (%d %%)" % (stage or "Starting the planning run", int(round(percent)))

@@ -428,8 +428,9 @@ def parseReport(text):
     fitCheck (dict or None), hostileNeck (dict or None: the neck's assessment against the
     hostile-neck rules, read as {"hostile": bool, "determinate": bool, "summary": str, "checks":
     [{"name", "status", "text", ...}]}, every field optional), deployment (dict or None: the ordered
-    configuration, Logic/IO/DeploymentToJson.h; null when no family has a main body) and
-    simulatedFamily (the family of the simulated graft, device.simulated, or None).
+    configuration, Logic/IO/DeploymentToJson.h; null when no family has a main body),
+    simulatedFamily (the family of the simulated graft, device.simulated, or None) and notSimulated
+    (why no graft was simulated, device.notSimulated, or None).
     """
     try:
         data = json.loads(text)
@@ -460,6 +461,7 @@ def parseReport(text):
         "hostileNeck": _dict(data.get("hostileNeck")),
         "deployment": _dict(data.get("deployment")),
         "simulatedFamily": device.get("simulated") if isinstance(device.get("simulated"), str) else None,
+        "notSimulated": device.get("notSimulated") if isinstance(device.get("notSimulated"), str) else None,
     }
 
 
@@ -754,6 +756,8 @@ def recommendationLines(report):
         for check in _list(neck.get("checks")):
             if isinstance(check, dict) and check.get("status") in ("fail", "indeterminate"):
                 lines.append((check["status"], str(check.get("text") or check.get("name", "?"))))
+    if report.get("notSimulated"):
+        lines.append(("fail", "No stent graft was simulated: %s." % report["notSimulated"]))
     fitCheck = report.get("fitCheck")
     if fitCheck:
         simulated = report.get("simulatedFamily") or (report.get("deployment") or {}).get("family")

@@ -315,3 +315,20 @@ def buildCliParameters(settings, nodes, pointCounts, reportPath, reportHtmlPath=
     if reportHtmlPath:
         parameters[REPORT_HTML_PARAMETER] = str(reportHtmlPath)
     return parameters
+
+
+def cliParametersCreatingOutputs(settings, inputNodes, pointCounts, outputNode, reportPath, reportHtmlPath=None):
+    """``buildCliParameters`` for a run whose output nodes are made on demand: the settings and the
+    input volume are checked first (ValueError, as ``buildCliParameters``), and only then is
+    ``outputNode(role)`` called once per output role (a NodeRole of OUTPUT_ROLES) for the node the
+    CLI writes into. So a run refused for its settings leaves no empty node in the scene.
+
+    inputNodes: role name -> node for the inputs (``None`` or missing when not selected).
+    """
+    validateSettings(settings)
+    if inputNodes.get("inputVolume") is None:
+        raise ValueError("No CT volume is selected; choose the CT angiography volume in Inputs.")
+    nodes = {name: node for name, node in inputNodes.items() if NODE_ROLES_BY_NAME[name].channel == "input"}
+    for role in OUTPUT_ROLES:
+        nodes[role.name] = outputNode(role)
+    return buildCliParameters(settings, nodes, pointCounts, reportPath, reportHtmlPath)

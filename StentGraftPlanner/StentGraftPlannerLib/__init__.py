@@ -12,6 +12,8 @@ that way in CTest (``Testing/Python``).
 - ``Results``: reading what the CLI returns (return parameters, the diameter-profile table, the JSON
   report) and formatting, at clinical precision and in words, the order list beside the anatomy,
   the device recommendation and the fit check.
+- ``Outcome``: what a completed run returned, as the panel's values, table rows and text (a run
+  whose device selection found nothing among them: a result, not a failure).
 - ``Appearance``: colours and opacities of the outputs and of the plot series, and the colours of
   the simulated graft's components.
 """

@@ -5,15 +5,15 @@ Usage: test_cohort_workflow.py --phantom PHANTOM_EXE --cli SGS_EXE --workdir DIR
 
 Six phantoms (1 x 1 x 1.5 mm): a wall in fat with 14 mm iliacs (a device fits), a vertebra in a
 scan that ends 20 mm below the aortic bifurcation (a partial plan: no limb can be sized), kidneys on a grid rotated 90 degrees about the body axis with a --device, the first anatomy with an
-empty seed cell (the CLI finds the aorta itself), a smaller sac, and one without contrast (lumen
+empty seed cell (the CLI finds the aorta itself), a smaller sac with a neck too wide for any device, and one without contrast (lumen
 100 HU, under the CLI's 150 HU seedMinimumHu). The manifest has every optional column, images
 given relative to its folder. `snakemake --cores 2` then must give:
 - cohort.csv with the columns case,status,error + the XML's return values in order, five `ok` rows
   whose values equal each case's own ret.params exactly, the seedless one with seedSource
   automatic, at least one device recommended, and one failed row (the non-contrast case) whose
   error is the one ERROR line of its log, its value cells empty and no output written;
-- each planned case with graft.vtp, or, where no whole graft can be simulated (the partial plan),
-  planned without it after the CLI refused the graft model (status.json says why);
+- each planned case with graft.vtp, written in one run; where no graft can be simulated (the wide
+  neck fits no device) it is empty and status.json says why (the report's reason);
 - cohort.html, self-contained (no script, every src/href a data: URI, no http/https/file
   reference), naming the failure, and opening in headless Chromium without a console message (a
   control page that logs one is caught, so the detector can fail);
@@ -53,7 +53,9 @@ def phantoms(exe, folder):
              ("c3-kidneys-rotated", FAST_GRID + DEVICE_FITS + ["--includeKidneys", "--directionLps", ROTATED_90_ABOUT_Z],
               True, "Endurant II", "ok"),
              ("c4-no-seed", FAST_GRID + DEVICE_FITS, False, "", "ok"),
-             ("c5-small-sac", FAST_GRID + ["--maxAneurysmDiameterMm", "42", "--neckLengthMm", "18"], True, "", "ok"),
+             # A 36 mm neck (outer), wider than every main body within 10-20 %: no device, no graft.
+             ("c5-small-sac", FAST_GRID + ["--maxAneurysmDiameterMm", "42", "--neckLengthMm", "18",
+                                           "--neckDiameterMm", "36"], True, "", "ok"),
              ("c6-non-contrast", FAST_GRID + ["--lumenHu", "100"], True, "", "failed")]
     rows, expected = [], []
     for name, options, seeded, device, status in cases:
@@ -115,20 +117,26 @@ def check_html(path, failed_case, failed_error, device, workdir, chromium_exe):
 
 
 def check_graft_models(out, planned):
-    """A planned case has graft.vtp, or says why not: the CLI's ERROR naming the graft model, after
-    which it was run again without it. The partial plan (c2) has no whole graft to simulate, every other
-    case has one (a phantom without a wall is sized on the lumen), so both happen here."""
+    """Every planned case has graft.vtp (the CLI writes it in one run, issue 33): with a graft where
+    the report names the simulated family, else empty, with graftModel false and the report's reason
+    in the note. The wide neck (c5) fits no device; the partial plan (c2) has its main body
+    simulated; every other case has a whole graft (a phantom without a wall is sized on the lumen)."""
     with_graft, without = [], []
     for case in planned:
-        status = json.load(open(os.path.join(out, "cases", case, "status.json")))
-        has_file = os.path.isfile(os.path.join(out, "cases", case, "graft.vtp"))
-        if status.get("graftModel") is True and has_file:
+        folder = os.path.join(out, "cases", case)
+        status = json.load(open(os.path.join(folder, "status.json")))
+        device = json.load(open(os.path.join(folder, "report.json"))).get("device") or {}
+        if not os.path.isfile(os.path.join(folder, "graft.vtp")):
+            continue
+        if status.get("graftModel") is True and device.get("simulated"):
             with_graft.append(case)
-        elif status.get("graftModel") is False and not has_file and "outputSimulatedStentModel" in status.get("note", ""):
+        elif (status.get("graftModel") is False and device.get("simulated") is None
+              and status.get("note") == device.get("notSimulated")
+              and "No catalogue device has a main body" in status.get("note", "")):
             without.append(case)
-    check(without == ["c2-bone-cut"] and len(with_graft) + len(without) == len(planned),
-          "a planned case has its graft model, or is planned without it when no graft can be simulated",
-          f"with {with_graft}, without {without}, of {planned}")
+    check(without == ["c5-small-sac"] and len(with_graft) + len(without) == len(planned),
+          "every planned case has its graft model; where no graft can be simulated it is empty and "
+          "status.json gives the report's reason", f"with {with_graft}, without {without}, of {planned}")
 
 
 def file_times(folder):

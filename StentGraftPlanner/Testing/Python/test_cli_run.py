@@ -114,5 +114,43 @@ class PlanningRunTest(unittest.TestCase):
         run.removeObservers()  # again: nothing left to remove, no error
 
 
+class OutcomeTest(unittest.TestCase):
+    """Issue 33 item 7: a cancel is not a failure, and the progress line names the CLI's stage."""
+
+    def test_Statuses_GiveTheirOutcome(self):
+        # vtkMRMLCommandLineModuleNode: Cancelled 0x08, Completed 0x20, CompletedWithErrors 0x60.
+        self.assertEqual(CliRun.runOutcome(0x08), CliRun.CANCELLED)
+        self.assertEqual(CliRun.runOutcome(0x20), CliRun.COMPLETED)
+        self.assertEqual(CliRun.runOutcome(0x60), CliRun.FAILED)
+        self.assertEqual(CliRun.runOutcome(0x00), CliRun.FAILED)  # Idle: never ran
+
+    def test_Cancel_IsReportedAsACancelWithoutAnErrorDialog(self):
+        status, dialog = CliRun.finishedMessage(CliRun.CANCELLED)
+        self.assertIn("cancelled", status)
+        self.assertNotIn("failed", status)
+        self.assertIsNone(dialog)
+
+    def test_Failure_ShowsTheErrorText(self):
+        status, dialog = CliRun.finishedMessage(CliRun.FAILED, "ERROR: seed 5000 outside the image")
+        self.assertEqual(status, "The planning run failed.")
+        self.assertIn("ERROR: seed 5000 outside the image", dialog)
+        self.assertEqual(CliRun.finishedMessage(CliRun.COMPLETED), ("Done.", None))
+
+    def test_StageMessage_IsReadFromTheModuleDescriptionText(self):
+        # SEM's ModuleDescription operator<< ends with its ModuleProcessInformation; Slicer copies the
+        # CLI's <filter-comment> (here with the quotes and spaces SlicerProgress writes) into it.
+        text = ("Category: Vascular\nTitle: Stent Graft Simulation\n  Description: ProgressMessage in a text\n"
+                "ProcessInformation: \n  Abort: 0\n  Progress: 0.42\n  Stage Progress: 0\n"
+                '  ProgressMessage:  "Segmenting the lumen" \n  ElapsedTime: 3.5\n')
+        self.assertEqual(CliRun.stageMessage(text), "Segmenting the lumen")
+        self.assertEqual(CliRun.progressText(42.4, CliRun.stageMessage(text)), "Segmenting the lumen... (42 %)")
+
+    def test_BeforeTheFirstStage_TheLineSaysTheRunIsStarting(self):
+        text = "ProcessInformation: \n  Abort: 0\n  Progress: 0\n  ProgressMessage: \n  ElapsedTime: 0\n"
+        self.assertEqual(CliRun.stageMessage(text), "")
+        self.assertEqual(CliRun.progressText(0, CliRun.stageMessage(text)), "Starting the planning run... (0 %)")
+        self.assertNotIn("Running", CliRun.progressText(0, ""))
+
+
 if __name__ == "__main__":
     unittest.main()

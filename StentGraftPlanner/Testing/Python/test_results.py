@@ -352,7 +352,7 @@ class ReportTest(unittest.TestCase):
         report = Results.parseReport(read("report-minimal.json"))
         self.assertEqual(report, {"proximalSite": None, "measurements": [], "warnings": [], "recommendation": None,
                                   "families": [], "fitCheck": None, "hostileNeck": None, "deployment": None,
-                                  "simulatedFamily": None})
+                                  "simulatedFamily": None, "notSimulated": None})
         self.assertEqual(Results.recommendationLines(report), [])
         self.assertEqual(Results.recommendationHtml(report), "The report holds no device recommendation.")
 

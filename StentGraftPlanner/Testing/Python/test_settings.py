@@ -271,5 +271,43 @@ class BuildCliParametersTest(unittest.TestCase):
             self.build(settings)
 
 
+class OutputNodesTest(unittest.TestCase):
+    """Issue 33 item 7: settings are checked before the output nodes are created."""
+
+    def inputs(self):
+        return {role.name: Node(role.name) for role in Settings.NODE_ROLES if role.channel == "input"}
+
+    def run_(self, settings, inputs):
+        created = []
+
+        def outputNode(role):
+            created.append(role.name)
+            return Node(role.name)
+
+        parameters = Settings.cliParametersCreatingOutputs(settings, inputs, ONE_POINT, outputNode, "/tmp/r.json")
+        return parameters, created
+
+    def test_ValidSettings_CreateEveryOutputOnceAndPassItToTheCli(self):
+        parameters, created = self.run_(Settings.defaultSettings(), self.inputs())
+        self.assertEqual(created, [role.name for role in Settings.OUTPUT_ROLES])
+        for name in created:
+            self.assertEqual(parameters[name].name, name)
+
+    def test_InvalidSettingsOrNoVolume_CreateNoNode(self):
+        cases = (
+            (dict(Settings.defaultSettings(), oversizingMinPercent=30.0), self.inputs()),
+            (dict(Settings.defaultSettings(), thresholdMode="manual", lowerHu=700.0), self.inputs()),
+            (dict(Settings.defaultSettings(), deviceFamily="Endurant:II"), self.inputs()),
+            (Settings.defaultSettings(), dict(self.inputs(), inputVolume=None)),
+        )
+        for settings, inputs in cases:
+            created = []
+            with self.assertRaises(ValueError):
+                Settings.cliParametersCreatingOutputs(settings, inputs, ONE_POINT,
+                                                      lambda role: created.append(role) or Node(role.name),
+                                                      "/tmp/r.json")
+            self.assertEqual(created, [])
+
+
 if __name__ == "__main__":
     unittest.main()

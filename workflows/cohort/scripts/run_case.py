@@ -10,12 +10,10 @@ Writes into DIR:
 - `status.json`, last: {"case", "status": "ok" | "failed", "error", "exitCode", "graftModel",
   "note"}. `error` is the CLI's one `ERROR: ...` line for a failed case, "" for a planned one.
 
-The simulated graft (`graft.vtp`) is asked for, because it is what a planner wants to look at; but
-the CLI refuses that output with an ERROR naming `outputSimulatedStentModel` when no graft can be
-simulated (a partial plan, no device within the catalogue). A case must not fail only because of
-that, so such a run is repeated once without the graft model: the case is then `ok` with
-`graftModel: false` and the first run's ERROR line in `note` (both runs are in log.txt). Any other
-failure is not repeated.
+The simulated graft (`graft.vtp`) is asked for, because it is what a planner wants to look at. When
+no graft can be simulated (no device within the catalogue's ranges, the proximal site not known)
+the CLI still plans and writes it as an empty model: the case is `ok` with `graftModel: false` and
+the reason (the report's device.notSimulated) in `note`. A failed case is not repeated.
 
 Exit code: 0 whenever the case was run, planned or not (its result is in status.json), so that one
 bad case does not stop the cohort; 1 only when the CLI itself cannot be started (a broken
@@ -30,10 +28,10 @@ import subprocess
 import sys
 
 RETURN_FILE = "ret.params"
-GRAFT_FLAG = "--outputSimulatedStentModel"
-GRAFT_FILE = "graft.vtp"
-# flag -> file name in the case folder; every output of StentGraftSimulation but the graft model.
+REPORT_FILE = "report.json"
+# flag -> file name in the case folder; every output of StentGraftSimulation.
 OUTPUTS = (
+    ("--outputSimulatedStentModel", "graft.vtp"),
     ("--outputLabelMap", "lumen.nrrd"),
     ("--outputWallLabelMap", "wall-labels.nrrd"),
     ("--outputOuterWallModel", "outer-wall.vtp"),
@@ -43,14 +41,14 @@ OUTPUTS = (
     ("--outputInitialStentModel", "stent-initial.vtp"),
     ("--outputMeasurements", "measurements.csv"),
     ("--outputDiameterProfile", "profile.csv"),
-    ("--outputReport", "report.json"),
+    ("--outputReport", REPORT_FILE),
     ("--outputReportHtml", "report.html"),
     ("--outputStraightenedVolume", "straight-right.nrrd"),
     ("--outputStraightenedLeftVolume", "straight-left.nrrd"),
 )
 
 
-def cli_argv(cli, image, outdir, seed=None, lowest_renal=None, device=None, graft=True):
+def cli_argv(cli, image, outdir, seed=None, lowest_renal=None, device=None):
     """The argument vector: return file, optional flags, outputs, then the positional input."""
     argv = [cli, "--returnparameterfile", os.path.join(outdir, RETURN_FILE)]
     if seed:
@@ -61,8 +59,6 @@ def cli_argv(cli, image, outdir, seed=None, lowest_renal=None, device=None, graf
         argv += ["--device", device]
     for flag, name in OUTPUTS:
         argv += [flag, os.path.join(outdir, name)]
-    if graft:
-        argv += [GRAFT_FLAG, os.path.join(outdir, GRAFT_FILE)]
     return argv + [image]
 
 
@@ -93,7 +89,7 @@ def run_once(argv, log, env):
 def run_case(cli, image, outdir, seed=None, lowest_renal=None, device=None, threads=None):
     """Runs one case; writes log.txt and then status.json; returns the status dict."""
     os.makedirs(outdir, exist_ok=True)
-    for name in [RETURN_FILE, GRAFT_FILE] + [name for _, name in OUTPUTS]:
+    for name in [RETURN_FILE] + [name for _, name in OUTPUTS]:
         if os.path.exists(os.path.join(outdir, name)):
             os.remove(os.path.join(outdir, name))  # a previous run's, which this run may not replace
     env = dict(os.environ)
@@ -102,15 +98,22 @@ def run_case(cli, image, outdir, seed=None, lowest_renal=None, device=None, thre
     status = {"case": os.path.basename(os.path.normpath(outdir)), "status": "ok", "error": "",
               "exitCode": 0, "graftModel": True, "note": ""}
     with open(os.path.join(outdir, "log.txt"), "w", encoding="utf-8") as log:
-        code, error = run_once(cli_argv(cli, image, outdir, seed, lowest_renal, device, True), log, env)
-        if code != 0 and GRAFT_FLAG.lstrip("-") in error:
-            status.update(graftModel=False, note=error)
-            log.write("== no graft can be simulated: running again without the graft model\n")
-            code, error = run_once(cli_argv(cli, image, outdir, seed, lowest_renal, device, False), log, env)
+        code, error = run_once(cli_argv(cli, image, outdir, seed, lowest_renal, device), log, env)
     if code != 0:
         status.update(status="failed", error=error, exitCode=code, graftModel=False)
+    else:
+        reason = not_simulated_reason(os.path.join(outdir, REPORT_FILE))
+        if reason:
+            status.update(graftModel=False, note=reason)
     write_json(os.path.join(outdir, "status.json"), status)
     return status
+
+
+def not_simulated_reason(report_path):
+    """Why the plan simulated no graft (the report's device.notSimulated), or "" when it did."""
+    with open(report_path, encoding="utf-8") as handle:
+        reason = (json.load(handle).get("device") or {}).get("notSimulated")
+    return reason if isinstance(reason, str) else ""
 
 
 def write_json(path, value):
