@@ -10,6 +10,7 @@
 #include <queue>
 #include <set>
 
+#include "Centerlines/LimbDivergence.h"
 #include "Centerlines/SmoothCenterline.h"
 #include "Centerlines/VesselOrigins.h"
 #include "Common/CheckRange.h"
@@ -379,6 +380,25 @@ std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph,
           const double score = std::min(right.radius, left.radius);
           const std::string where =
             "the junction at " + FormatPoint(graph.nodes[n].position) + " mm LPS has the shape of a Y, but ";
+          // The iliacs part; a dissection's two channels run on side by side (LimbDivergence.h).
+          // Limbs too short to tell (under 4 mm: the skeleton's fork at a cut face) make no Y.
+          const LimbDivergence parting = MeasureLimbDivergence(rightPath.points, rightPath.radii, leftPath.points,
+                                                               leftPath.radii, LimbDivergenceReachMm);
+          if (std::isnan(parting.angleDeg))
+            continue;
+          // Judged where a partial Y could be taken (its coverage rule wants as much of each limb).
+          if (parting.reachMm >= params.minimumIliacCoverageMm && parting.angleDeg < MinimumLimbDivergenceDeg &&
+              parting.septumMm < MaximumDissectionSeptumMm)
+          {
+            refused.push_back({ n, score,
+                                where + "its two lower limbs run on side by side (diverging by " +
+                                  FormatNumber(parting.angleDeg, 1) + " degrees over their first " +
+                                  FormatNumber(parting.reachMm, 0) + " mm, their lumens " +
+                                  FormatNumber(std::max(0.0, parting.septumMm), 1) +
+                                  " mm apart there): two channels split by a septum, as the true and false lumens "
+                                  "of an aortic dissection, not the iliac arteries" });
+            continue;
+          }
           // The aorta is wider than each iliac over its length: a junction whose upper vessel is
           // narrower than a lower one is large vessels meeting (the venae cavae at the heart), not
           // the aorta above its bifurcation. Whole vessels are compared, not their first

@@ -17,6 +17,7 @@
 #include "Device/ConfigurationLengths.h"
 #include "Device/DeployGraft.h"
 #include "Segmentation/FindAorticSeed.h"
+#include "Segmentation/FindEndograft.h"
 #include "Stent/WallDistanceField.h"
 
 namespace sgp
@@ -66,6 +67,15 @@ void SegmentLumen(const CtImage& ct,
 {
   report.Begin("SegmentLumen", "Segmenting the aortic lumen by region growing");
   plan.lumen = GrowLumenRegion(ct, seedLps, params.growing, report.Callback());
+  // A post-EVAR scan: its graft's struts break the lumen, and the plan would fail later with a
+  // wrong cause (or measure the graft); say what it is instead (FindEndograft.h).
+  const EndograftEvidence metal = FindEndograft(ct, *plan.lumen.mask, plan.lumen.box);
+  if (metal.found)
+    throw InputError("The aorta's lumen holds metal: stent rings up to " + FormatNumber(metal.maximumHu, 0) +
+                     " HU all around it over " + FormatNumber(metal.ringLengthMm, 0) + " mm (z " +
+                     FormatNumber(metal.ringFromZ, 0) + " to " + FormatNumber(metal.ringToZ, 0) +
+                     " mm LPS), so an endograft or another metal device is already in place; this plan is for "
+                     "pre-operative CT angiograms of an unrepaired aorta.");
   for (const std::string& w : plan.lumen.warnings)
     report.Warn(w);
   report.LumenReady(plan.lumen);

@@ -1075,6 +1075,7 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
   crop.region = MaskGrid();
   std::vector<short>().swap(crop.hu);
   result.mask = PasteOnGrid(ct, region.lumen, crop.box);
+  result.box = crop.box; // step 7 adds only inside it
 
   // Step 7: narrow branches the window lost, followed on at the edge level (ContinueThinBranches.h).
   if (params.thinBranchRadiusMm > 0.0)

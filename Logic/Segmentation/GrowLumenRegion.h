@@ -85,6 +85,7 @@
 #include <string>
 #include <vector>
 
+#include "Common/IndexBox.h"
 #include "Common/Types.h"
 
 namespace sgp
@@ -132,6 +133,7 @@ void ValidateRegionGrowingParams(const RegionGrowingParams& params);
 struct LumenSegmentation
 {
   LabelImage::Pointer mask; ///< on the grid of the input, 1 = lumen
+  IndexBox box;             ///< image-index box holding every lumen voxel (padded; inside the image)
   double volumeMl = 0.0;    ///< lumen volume, mL
   double lowerHu = 0.0;     ///< window used, HU
   double upperHu = 0.0;     ///< window used, HU

@@ -15,7 +15,8 @@ The cases: missing input file, unreadable file, a 2-D image, a seed outside
 the image, a seed in soft tissue, an inverted manual HU window, no seed, a
 non-numeric seed and one of two numbers, a stent mesh whose rings are not a multiple of 4, two
 stent diameters where three are needed, a scan that stops above the
-aortic bifurcation with centerlines requested (no Y may be made up), a device
+aortic bifurcation with centerlines requested (no Y may be made up), a post-EVAR scan (an
+endograft's struts in the aorta, with and without a seed), a device
 catalogue with a missing field and with a wrongly typed one, an unknown
 --device, an inverted oversizing range, and a lowest-renal point far from the
 aorta. A positive control through the same harness (valid input
@@ -127,6 +128,44 @@ def non_contrast(volume_path, out_path):
     with open(out_path, "wb") as handle:
         handle.write(("\n".join(lines) + "\n\n").encode())
         handle.write(np.ascontiguousarray(data).tobytes())
+
+
+def with_endograft(volume_path, truth_path, out_path, strut_hu=2500):
+    """The volume with a stent graft's Z-stent rings in the aorta (a post-EVAR scan): rings 10 mm
+    high, 4 mm apart, 8 apices, on a cylinder 0.5 mm inside the neck's lumen around the truth's
+    aortic axis, from 2 mm above the lowest renal ostium down to the bifurcation; each wire sample
+    sets its nearest voxel to at least strut_hu. Written as raw NRRD on the same grid."""
+    data, header = sem_rules.read_nrrd(volume_path)
+    data = data.astype("<i2")
+    truth = json.load(open(truth_path))
+    origin, directions = np.array(header["origin"], float), np.array(header["directions"], float)
+    inverse = np.linalg.inv(directions.T)  # LPS offset -> (i, j, k)
+    axis = np.array(next(v for v in truth["vessels"] if v["name"] == "aorta")["points"], float)
+    radius = truth["sizing"]["proximalNeckDiameter"] / 2.0 - 0.5
+    top = truth["landmarks"]["rightRenalOstium"][2] + 2.0
+    bottom = truth["landmarks"]["aorticBifurcation"][2]
+    t = np.arange(0.0, 1.0, 0.0002)
+    phase = np.mod(8.0 * t, 1.0)
+    ring_top = top
+    while ring_top - 10.0 >= bottom:
+        z = ring_top - 10.0 * np.where(phase < 0.5, 2.0 * phase, 2.0 - 2.0 * phase)
+        centre = axis[np.abs(axis[:, 2][None, :] - z[:, None]).argmin(axis=1)]
+        points = np.stack([centre[:, 0] + radius * np.cos(2 * np.pi * t),
+                           centre[:, 1] + radius * np.sin(2 * np.pi * t), z], axis=1)
+        ijk = np.rint((points - origin) @ inverse.T).astype(int)
+        ok = np.all((ijk >= 0) & (ijk < np.array(data.shape[::-1])), axis=1)
+        i, j, k = ijk[ok].T
+        data[k, j, i] = np.maximum(data[k, j, i], strut_hu)
+        ring_top -= 14.0
+    lines = ["NRRD0004", "type: short", "dimension: 3", "space: left-posterior-superior",
+             "sizes: %d %d %d" % (data.shape[2], data.shape[1], data.shape[0]),
+             "space directions: " + " ".join("(%r,%r,%r)" % tuple(d) for d in directions),
+             "kinds: domain domain domain", "endian: little", "encoding: raw",
+             "space origin: (%r,%r,%r)" % tuple(origin)]
+    with open(out_path, "wb") as handle:
+        handle.write(("\n".join(lines) + "\n\n").encode())
+        handle.write(np.ascontiguousarray(data).tobytes())
+    return out_path
 
 
 def crop_above(volume_path, out_path, z_min_lps):
@@ -258,6 +297,14 @@ def main():
     plain = os.path.join(workdir, "non-contrast.nrrd")
     non_contrast(volume, plain)
     bad_case(cli, workdir, "no-seed-no-contrast", plain, [], ["No aorta found", "150 HU", "--seed"])
+
+    # A post-EVAR scan (issue 33 item 8): an endograft's struts in the aorta's lumen. One ERROR
+    # that says what it is, with or without a seed, instead of "No aortic bifurcation found".
+    stented = with_endograft(volume, os.path.join(workdir, "small-truth.json"),
+                             os.path.join(workdir, "post-evar.nrrd"))
+    for label, extra in (("post-evar", valid_seed), ("post-evar-no-seed", [])):
+        bad_case(cli, workdir, label, stented, extra + ["--outputCenterlines", "{outdir}/centerlines.vtp"],
+                 ["endograft or another metal device is already in place", "pre-operative"])
 
     # Holds in both builds: inside Slicer SEM's GenerateCLP reads the components with atof (a,b,c
     # would be the origin), so the CLI checks the text of its points itself (ValidatePointArguments;
