@@ -18,7 +18,7 @@ Slicer cannot be installed here, so this is how the Slicer branch of the CMake c
    generate-config include and then the CPack include.
 3. Every file the generated install scripts would install from the source tree exists, and the
    device catalogue Resources/devices.json is installed into the CLI folder (beside the CLI).
-4. Both CLIs are built as SEM builds them, with the real compiler and linker: a SHARED
+4. The build a Slicer extension build makes (the default target) succeeds; both CLIs are built as SEM builds them, with the real compiler and linker: a SHARED
    <Name>Lib holding the module and the project's static libraries (which must be position
    independent) and a launcher that calls its ModuleEntryPoint. UseITK registers no ImageIO
    factory in this build (the stub's UseSlicer sets ITK_NO_IO_FACTORY_REGISTER_MANAGER, as Slicer
@@ -29,6 +29,13 @@ Slicer cannot be installed here, so this is how the Slicer branch of the CMake c
    (exit 0, its outputs written, the catalogue found beside it); `--seed a,b,c` and `--seed 1,2` are
    rejected with one ERROR line by the CLI's own check; a seed outside the volume is reported
    after the volume was read.
+   Issue 33: <Name>.xml is copied beside each launcher (equal to its --xml) and installed there;
+   an unknown flag or enumeration value is TCLAP's `PARSE ERROR:` with the usage (SEM leaves
+   TCLAP's exception handling on); the generated header includes ModuleProcessInformation.h and
+   defines its symbols out of line, so two CLP headers in one binary do not link (planted: they
+   do not), while each CLI's test binary, built with -DSGP_BUILD_GTESTS=ON, links and passes;
+   the tests that need Chromium, Snakemake, Slurm or pyflakes are registered to report a missing
+   tool as skipped (run_if_tools.py, SKIP_RETURN_CODE 77), and nothing else needs one.
 6. With --standalone-build: that (standalone) build found Debian's nlohmann JSON, TCLAP,
    /usr/bin/python3, GoogleTest and Google Benchmark.
 7. Planted defects make the checks fail: a missing script and missing metadata stop the stub; a
@@ -292,6 +299,89 @@ def check_runs(build, workdir):
           and "Cannot read" not in lines[0], "exit %s, stderr %r" % (outside.returncode, outside.stderr[-500:]))
 
 
+def check_semantics_of_real_sem(args, build, source):
+    """Issue 33 items 2-4 and 6: what SEM's GenerateCLP and SEMMacroBuildCLI do beyond the build."""
+    cli_dir = os.path.join(build, CLI_DIR)
+    simulation = os.path.join(cli_dir, "StentGraftSimulation")
+    for cli in ("StentGraftSimulation", "SyntheticAorticPhantom"):
+        beside = os.path.join(cli_dir, cli + ".xml")
+        printed = run([os.path.join(cli_dir, cli), "--xml"], cwd=cli_dir, timeout=60).stdout
+        same = os.path.isfile(beside) and open(beside).read().rstrip("\n") == printed.rstrip("\n")
+        check("%s.xml is copied beside the launcher and equals its --xml" % cli, same,
+              "exists %s" % os.path.isfile(beside))
+    installed = installedSourceFiles(os.path.realpath(build), source)
+    for cli in ("StentGraftSimulation", "SyntheticAorticPhantom"):
+        xml = os.path.join(source, "CLI", cli + ".xml")
+        check("%s.xml is installed beside the launcher" % cli,
+              any(path == xml and destination.endswith(CLI_DIR) for destination, path in installed))
+
+    for label, extra in (("an unknown flag", ["--noSuchFlag", "3"]), ("a bad enumeration", ["--acmMode", "bogus"])):
+        bad = run([simulation, "ct.nrrd", "--seed", "0,0,0"] + extra, cwd=cli_dir, timeout=60)
+        lines = stderr_lines(bad)
+        check("%s: TCLAP's PARSE ERROR and the usage, exit 1, as under SEM's GenerateCLP" % label,
+              bad.returncode == 1 and lines and lines[0].startswith("PARSE ERROR:") and len(lines) > 3,
+              "exit %s, stderr %r" % (bad.returncode, bad.stderr[:300]))
+
+    headers = [os.path.join(build, "CLI", n + "CLP.h") for n in ("StentGraftSimulation", "SyntheticAorticPhantom")]
+    text = open(headers[0]).read()
+    check("the generated header includes ModuleProcessInformation.h and defines its symbols out of line",
+          '#include "ModuleProcessInformation.h"' in text and
+          'extern "C" Module_EXPORT char XMLModuleDescription[] = ' in text and "void splitString(" in text)
+    # Two CLP headers in one binary: "multiple definition", as with SEM's; one alone links.
+    planted = os.path.join(args.workdir, "planted-two-clp-headers")
+    os.makedirs(planted, exist_ok=True)
+    units = []
+    for i, header in enumerate(headers):
+        unit = os.path.join(planted, "unit%d.cxx" % i)
+        with open(unit, "w") as f:
+            f.write('#include "%s"\n' % header + ("int main() { return 0; }\n" if i == 0 else ""))
+        units.append(unit)
+    includes = ["-I" + os.path.join(source, "CLI"), "-I" + os.path.join(build, "slicer-stub", "tclap", "include"),
+                "-I" + os.path.join(STUB, "SlicerExecutionModel", "ModuleDescriptionParser")]
+    both = run(["c++", "-std=c++17", *includes, *units, "-o", os.path.join(planted, "both")], timeout=600)
+    check("planted defect, two CLP headers in one binary, fails to link (multiple definition)",
+          both.returncode != 0 and "multiple definition" in both.stderr, both.stderr[-800:])
+    one = run(["c++", "-std=c++17", *includes, units[0], "-o", os.path.join(planted, "one")], timeout=600)
+    check("  ... and one CLP header alone links", one.returncode == 0, one.stderr[-800:])
+
+    # The tests a Slicer build registers: those that need a tool beyond Slicer report it skipped.
+    registered = {}
+    for testfile in glob.glob(os.path.join(build, "**", "CTestTestfile.cmake"), recursive=True):
+        for line in open(testfile).read().splitlines():
+            match = re.match(r"(?:add_test|set_tests_properties)\((?:\[=\[)?([\w.]+)", line)
+            if match:
+                registered[match.group(1)] = registered.get(match.group(1), "") + " " + line
+    for name in ("StentGraftPlanner.SlicerCodeCompiles", "cli.ReportHtml", "workflow.Cohort", "workflow.CohortSlurm"):
+        entry = registered.get(name, "")
+        check("%s is registered to report a missing tool as skipped" % name,
+              "run_if_tools.py" in entry and re.search(r'SKIP_RETURN_CODE "77"', entry), entry[:300])
+    tools = ("chromium", "snakemake", "sbatch", "slurmctld", "pyflakes", "jsonschema", "skimage")
+    unguarded = [n for n, entry in registered.items()
+                 if "run_if_tools.py" not in entry and any(t in entry for t in tools)]
+    check("no other registered test names a tool beyond Slicer", not unguarded, ", ".join(unguarded))
+    missing = run([args.cmake, "-E", "env", "PATH=/nonexistent", os.path.realpath(os.path.join(
+        build, "slicer-stub", "python-install", "bin", "PythonSlicer")), os.path.join(source, "Testing", "Tools",
+        "run_if_tools.py"), "--program", "snakemake", "--", "false"], timeout=60)
+    check("run_if_tools.py without the tool: one SKIPPED line naming it, exit 77",
+          missing.returncode == 77 and missing.stdout.startswith("SKIPPED:") and "snakemake" in missing.stdout,
+          "exit %s, %r" % (missing.returncode, missing.stdout + missing.stderr))
+
+    # -DSGP_BUILD_GTESTS=ON (GoogleTest installed): each CLI's test binary links and passes.
+    again = run([args.cmake, "-S", source, "-B", build, "-DSGP_BUILD_GTESTS=ON",
+                 "-DCMAKE_DISABLE_FIND_PACKAGE_GTest=OFF", "-DCMAKE_IGNORE_PATH="])
+    check("the Slicer build configures with -DSGP_BUILD_GTESTS=ON", again.returncode == 0,
+          (again.stdout + again.stderr)[-2000:])
+    if again.returncode == 0:
+        built, seconds = cmake_build(args, build, ["sgpCliTests", "sgpPhantomCliTests"])
+        print("build of the CLI test binaries: %.0f s" % seconds)
+        check("sgpCliTests and sgpPhantomCliTests link in the Slicer build (one CLP header each)",
+              built.returncode == 0, (built.stdout + built.stderr)[-3000:])
+        if built.returncode == 0:
+            for binary in ("sgpCliTests", "sgpPhantomCliTests"):
+                ran = run([os.path.join(build, "Testing", binary)], timeout=300)
+                check("  ... %s passes" % binary, ran.returncode == 0, ran.stdout[-1500:])
+
+
 def check_standalone(build):
     cache = read_cache(build)
     if not cache:
@@ -394,8 +484,8 @@ def main():
     check_compile_commands(build, source, standin)
 
     # The build SEM's macro makes, with the real compiler and linker.
-    built, seconds = cmake_build(args, build, ["StentGraftSimulation", "SyntheticAorticPhantom"])
-    print("build of both CLI modules and the libraries: %.0f s" % seconds)
+    built, seconds = cmake_build(args, build, [])  # the default target: what a Slicer build builds
+    print("build of the default target (both CLI modules and the libraries): %.0f s" % seconds)
     log = built.stdout + built.stderr
     relocation = [line for line in log.splitlines() if "relocation" in line or "recompile with" in line]
     check("both CLI modules build and link (SHARED <Name>Lib + launcher)", built.returncode == 0,
@@ -417,6 +507,7 @@ def main():
         check("the stub's GenerateCLP parses points with atof, as SEM's does",
               os.path.exists(header) and "sgp_sem::SplitWithAtof<float>(seedArg.getValue()" in open(header).read())
         check_runs(build, args.workdir)
+        check_semantics_of_real_sem(args, build, source)
 
     if args.standalone_build:
         check_standalone(args.standalone_build)

@@ -8,7 +8,12 @@ set(SlicerExecutionModel_CMAKE_DIR ${CMAKE_CURRENT_LIST_DIR})
 
 set(TCLAP_DIR ${CMAKE_CURRENT_LIST_DIR}/tclap)
 find_package(TCLAP REQUIRED)
-set(SlicerExecutionModel_INCLUDE_DIRS ${TCLAP_INCLUDE_DIRS})
+# SEM gives its ModuleDescriptionParser folder too: the generated CLP headers include
+# ModuleProcessInformation.h from it (the stub carries a stand-in of that header).
+set(SlicerExecutionModel_INCLUDE_DIRS ${TCLAP_INCLUDE_DIRS} ${CMAKE_CURRENT_LIST_DIR}/ModuleDescriptionParser)
+if(NOT DEFINED SlicerExecutionModel_DEFAULT_CLI_TARGETS_FOLDER_PREFIX)
+  set(SlicerExecutionModel_DEFAULT_CLI_TARGETS_FOLDER_PREFIX "Module-") # as Slicer sets it
+endif()
 
 if(NOT DEFINED SlicerExecutionModel_DEFAULT_CLI_LIBRARY_WRAPPER_CXX)
   set(SlicerExecutionModel_DEFAULT_CLI_LIBRARY_WRAPPER_CXX ${CMAKE_CURRENT_LIST_DIR}/SEMCommandLineLibraryWrapper.cxx)

@@ -8,12 +8,17 @@ include_directories(BEFORE ${SlicerExecutionModel_INCLUDE_DIRS}) # as SEM's use 
 # does (read at SEM 6e167626e417), unless EXECUTABLE_ONLY is given:
 #   - <NAME>CLP.h generated from the XML into the current binary directory, which is added to the
 #     include directories (GenerateCLP.py beside this file stands in for SEM's GenerateCLP);
-#   - <NAME>Lib, a SHARED library of <NAME>.cxx and ADDITIONAL_SRCS compiled with -Dmain=ModuleEntryPoint
-#     and hidden visibility (SEM does so when ITK is built shared), linked with TARGET_LIBRARIES
-#     (plain target_link_libraries signature, as SEM uses);
+#   - <NAME>Lib, a SHARED library of <NAME>.cxx and ADDITIONAL_SRCS compiled with -Dmain=ModuleEntryPoint,
+#     linked with TARGET_LIBRARIES (plain target_link_libraries signature, as SEM uses). Its symbols
+#     keep the default visibility: SEM hides them only when USE_COMPILER_HIDDEN_VISIBILITY is set,
+#     which neither SEM, Slicer 5.8, ITK 5.2, VTK 9.1 nor CMake defines (kept here as SEM has it);
+#     SEM's IPO block never runs either (it compares the policy setting NEW with EQUAL), so none;
 #   - <NAME>, the launcher: SlicerExecutionModel_CLI_LIBRARY_WRAPPER_CXX linked with <NAME>Lib and
 #     SlicerExecutionModel_EXTRA_EXECUTABLE_TARGET_LIBRARIES;
-#   - both in Slicer's CLI folder of the build tree, and installed there.
+#   - both in Slicer's CLI folder of the build tree, with LABELS <NAME> and FOLDER
+#     Module-<NAME> (SlicerExecutionModel_DEFAULT_CLI_TARGETS_FOLDER_PREFIX), and installed there;
+#   - <NAME>.xml copied beside the launcher after each build (POST_BUILD, copy_if_different) and
+#     installed beside it: Slicer reads that file, not --xml, when it finds one.
 # With EXECUTABLE_ONLY: a STATIC <NAME>Lib compiled the same way, and the launcher with -DMODULE_STATIC.
 # Beyond SEM it stops the configure when a source, the XML or an include directory is missing, or
 # when a TARGET_LIBRARIES entry is neither a target nor an existing file.
@@ -108,12 +113,21 @@ function(SEMMacroBuildCLI)
     RUNTIME_OUTPUT_DIRECTORY "${MY_RUNTIME_OUTPUT_DIRECTORY}"
     LIBRARY_OUTPUT_DIRECTORY "${MY_LIBRARY_OUTPUT_DIRECTORY}"
     ARCHIVE_OUTPUT_DIRECTORY "${MY_ARCHIVE_OUTPUT_DIRECTORY}")
+  set_target_properties(${CLP} ${CLP}Lib PROPERTIES LABELS ${CLP})
+  get_filename_component(xml_name ${xml} NAME)
+  add_custom_command(TARGET ${CLP} POST_BUILD
+    COMMAND ${CMAKE_COMMAND} -E copy_if_different ${xml} ${MY_RUNTIME_OUTPUT_DIRECTORY}/${xml_name}
+    COMMENT "Slicer stub: copying ${xml_name} beside the launcher")
   if(NOT MY_NO_INSTALL)
     install(TARGETS ${CLP} ${CLP}Lib
       RUNTIME DESTINATION ${MY_INSTALL_RUNTIME_DESTINATION} COMPONENT RuntimeLibraries
       LIBRARY DESTINATION ${MY_INSTALL_LIBRARY_DESTINATION} COMPONENT RuntimeLibraries
       ARCHIVE DESTINATION ${MY_INSTALL_ARCHIVE_DESTINATION} COMPONENT Development)
+    install(FILES ${xml} DESTINATION ${MY_INSTALL_RUNTIME_DESTINATION} COMPONENT RuntimeLibraries)
   endif()
-  get_filename_component(xml_name ${xml} NAME)
+  if(NOT MY_FOLDER)
+    set(MY_FOLDER "${SlicerExecutionModel_DEFAULT_CLI_TARGETS_FOLDER_PREFIX}${CLP}")
+  endif()
+  set_target_properties(${CLP} ${CLP}Lib PROPERTIES FOLDER ${MY_FOLDER})
   sgp_stub_record("SEMMacroBuildCLI ${CLP} XML ${xml_name} LIB ${library_type} LIBRARIES ${MY_TARGET_LIBRARIES}")
 endfunction()
