@@ -55,6 +55,7 @@ void SlicerProgress::Begin(const std::string& name, const std::string& comment)
   m_Next = next + 1;
   m_Open = true;
   m_Start = std::chrono::steady_clock::now();
+  m_OwnSeconds = -1.0;
   m_Out << "<filter-start>" << std::endl;
   m_Out << "<filter-name>" << TagSafe(name) << "</filter-name>" << std::endl;
   m_Out << "<filter-comment> \"" << TagSafe(comment) << "\" </filter-comment>" << std::endl;
@@ -73,9 +74,16 @@ ProgressCallback SlicerProgress::Callback()
   return [this](double fraction, std::string_view) { Report(fraction); };
 }
 
+void SlicerProgress::SetOwnTime(double seconds)
+{
+  m_OwnSeconds = std::max(0.0, seconds);
+}
+
 void SlicerProgress::End()
 {
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_Start).count();
+  const double seconds = m_OwnSeconds >= 0.0
+                           ? m_OwnSeconds
+                           : std::chrono::duration<double>(std::chrono::steady_clock::now() - m_Start).count();
   m_Done += m_Stages[m_Current].weight;
   Emit(m_Done / m_Total);
   char time[32];

@@ -47,7 +47,10 @@ public:
   void Report(double fraction);
   /// A callback for Logic functions that reports into the current stage.
   ProgressCallback Callback();
-  /// Closes the current stage with its elapsed time in seconds.
+  /// The open stage's work ran elsewhere (on another core, while earlier stages ran) for `seconds`:
+  /// End reports that as its time instead of the time since Begin (which is only the wait for it).
+  void SetOwnTime(double seconds);
+  /// Closes the current stage with its elapsed time in seconds (or the time SetOwnTime gave).
   void End();
 
 private:
@@ -62,6 +65,7 @@ private:
   std::size_t m_Next = 0;    ///< where Begin looks for the next stage
   bool m_Open = false;
   std::chrono::steady_clock::time_point m_Start;
+  double m_OwnSeconds = -1.0; ///< SetOwnTime's, for the open stage; < 0: none
 };
 
 } // namespace sgp

@@ -113,6 +113,7 @@ int main(int argc, char* argv[])
     observer.begin = [&](std::string_view name, std::string_view text)
     { progress.Begin(std::string(name), std::string(text)); };
     observer.progress = progress.Callback();
+    observer.ownTime = [&](double seconds) { progress.SetOwnTime(seconds); };
     observer.warn = [](const std::string& warning) { PrintWarnings({ warning }, std::cerr); };
     observer.lumenReady = [&](const LumenSegmentation& lumen)
     {

@@ -2,7 +2,8 @@
 """The dependency rule of Logic/ (README "Layout"; Logic/CMakeLists.txt): a stage folder includes
 only the shared vocabulary and the stages before it in DESIGN.md's data flow; Phantom only the
 shared vocabulary; IO anything in Logic; nothing in Logic includes the CLI, tclap or a *CLP.h, and
-only IO includes ITK/VTK readers or writers.
+only IO includes ITK/VTK readers or writers; and no file in Logic is longer than MAX_LINES (issue 34:
+files a newcomer can hold in mind; STYLE.md aims at 300-400).
 
 Usage: test_logic_layering.py LOGIC_DIR
 
@@ -19,6 +20,7 @@ ALLOWED["IO"] = set(ORDER) | {"Phantom", "IO"}
 OURS = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 SYSTEM = re.compile(r'^\s*#\s*include\s+<([^>]+)>', re.M)
 # What only the I/O room may use (STYLE.md B1): readers, writers, file streams, printing.
+MAX_LINES = 700
 IO_ONLY = re.compile(r"^(itkImageFileReader|itkImageFileWriter|itkImageSeriesReader|itkGDCM|vtkXML|vtk.*Writer|"
                      r"vtk.*Reader|fstream|iostream|tclap/)")
 
@@ -47,6 +49,9 @@ def main():
                     problems.append(f'"{include}": {folder} may use only {", ".join(sorted(ALLOWED[folder]))}')
                 if include.endswith("CLP.h"):
                     problems.append(f'"{include}": no command-line code in Logic')
+            lines = text.count("\n")
+            if lines > MAX_LINES:
+                problems.append(f"{lines} lines, more than {MAX_LINES}: split it by step into files named after what they hold")
             if folder != "IO":
                 problems += [f"<{inc}> is for the I/O room only" for inc in SYSTEM.findall(text) if IO_ONLY.match(inc)]
             if problems:

@@ -2,7 +2,9 @@
 # Installs what is missing, builds, generates a synthetic aneurysm phantom (with a vertebra and
 # enhancing kidneys), runs the whole planning job on it the way Slicer would (lumen, centerlines,
 # stent fit, measurements, device selection, simulated graft), and prints the results next to
-# the phantom's known truth, ending with the recommendation and the fit check.
+# the phantom's known truth, the recommendation and the fit check; it ends with the paths of the
+# visual report (HTML) and the straightened views it wrote. Each stage's time is its own (the wall
+# stage's is its work on the second core).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
@@ -29,6 +31,8 @@ echo "== Running StentGraftSimulation (seed $seed, RAS)"
   --outputSimulatedStentModel "$demo/graft.vtp" --outputMeasurements "$demo/measurements.csv" \
   --outputDiameterProfile "$demo/profile.csv" --outputReport "$demo/report.json" \
   --outputWallLabelMap "$demo/wall.nrrd" --outputOuterWallModel "$demo/outer-wall.vtp" \
+  --outputReportHtml "$demo/report.html" --outputStraightenedVolume "$demo/straight-right.nrrd" \
+  --outputStraightenedLeftVolume "$demo/straight-left.nrrd" \
   --returnparameterfile "$demo/results.params" >"$demo/run.log"
 
 "$SGP_PYTHON" - "$demo" <<'PY'
@@ -123,4 +127,9 @@ for name, what in (("phantom.nrrd", "CT volume (HU)"), ("truth.json", "analytic 
     print("  %-18s %s" % (name, what))
 print()
 print("Device figures are public defaults (Resources/devices.json): verify them against the current IFU.")
+print()
+print("The visual report and the straightened views (CT resampled along the centerline; open the .nrrd in 3D Slicer):")
+for name in ("report.html", "straight-right.nrrd", "straight-left.nrrd"):
+    path = os.path.join(demo, name)
+    print("  " + (path if os.path.isfile(path) and os.path.getsize(path) > 0 else path + " (missing!)"))
 PY

@@ -6,11 +6,33 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
+# Each stage's wall time, printed at the end (also when a stage fails): .ci/run shows them.
+stage_names=()
+stage_seconds=()
+stage_start=$SECONDS
+stage_done() {
+  stage_names+=("$1")
+  stage_seconds+=($((SECONDS - stage_start)))
+  stage_start=$SECONDS
+}
+print_stage_times() {
+  local status=$?
+  echo "== Stage times (scripts/test.sh$( [ $status -ne 0 ] && echo ", stopped with exit code $status"))"
+  local i
+  for i in "${!stage_names[@]}"; do
+    printf '   %-34s %4d min %02d s\n' "${stage_names[$i]}" $((stage_seconds[$i] / 60)) $((stage_seconds[$i] % 60))
+  done
+  printf '   %-34s %4d min %02d s\n' "total" $((SECONDS / 60)) $((SECONDS % 60))
+}
+trap print_stage_times EXIT
+
 sgp_install
+stage_done "install"
 # Warnings are errors in CI (STYLE.md B9); locally they are shown.
 werror=OFF
 if [ "${CI:-}" = "true" ]; then werror=ON; fi
 sgp_build -DSGP_WERROR=$werror -DBUILD_TESTING=ON
+stage_done "build"
 
 echo "== Running the tests"
 cd "$SGP_BUILD"
@@ -21,6 +43,7 @@ if [ $# -eq 0 ]; then
   set -- -LE 'benchmark|sweep32'
 fi
 ctest --output-on-failure -j 2 "$@"
+stage_done "tests"
 
 # The same unit and CLI tests built with AddressSanitizer and UndefinedBehaviorSanitizer, in a
 # second folder (-O1 -g1: optimised as AddressSanitizer's documentation advises, with line tables
@@ -32,6 +55,7 @@ if [ "$#" -eq 2 ] && [ "$1" = "-LE" ] && [ "$2" = "benchmark|sweep32" ] || [ "${
     SGP_BUILD="$SGP_ROOT/build-sanitize" sgp_build -DSGP_WERROR=$werror -DBUILD_TESTING=ON \
       -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
       -DSGP_SANITIZE=address,undefined -DSGP_BUILD_BENCHMARKS=OFF
+    stage_done "sanitizer build"
     echo "== Running the unit and CLI tests under the sanitizers"
     cd "$SGP_ROOT/build-sanitize"
     export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:detect_stack_use_after_return=1:allocator_may_return_null=1"
@@ -52,5 +76,6 @@ if [ "$#" -eq 2 ] && [ "$1" = "-LE" ] && [ "$2" = "benchmark|sweep32" ] || [ "${
     # ChestScanWithoutRenals, CutScanWithoutRenals).
     repeated='^(AutomaticSeed\.|FindAorticSeed\.(RandomAnatomies|EveryTestPhantom)_|RealAnatomy/(AvtAutomaticSeed|AvtCutBelowTheBifurcation)\.|Deployment/|Deployment\.(SameNeck|DemoPhantom|Twelve|TwentySix|Sixteen)|Issue31/|Issue32/|Issue32\.)'
     ctest --output-on-failure -j 2 -L 'unit|cli' -E "$repeated"
+    stage_done "sanitizer tests"
   fi
 fi

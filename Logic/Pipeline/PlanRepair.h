@@ -121,6 +121,9 @@ struct PlanObserver
   std::function<void(std::string_view name, std::string_view description)> begin;
   ProgressCallback progress; ///< fraction of the current stage
   std::function<void(const std::string& warning)> warn;
+  /// The stage just begun did its work on the second core, beside the stages before it, in this
+  /// many seconds (the wall stage): a front end reports that as the stage's own time.
+  std::function<void(double seconds)> ownTime;
   /// Called once the lumen is final, before the later stages run (a front end may start writing
   /// the label map on another core); the mask is not changed afterwards.
   std::function<void(const LumenSegmentation& lumen)> lumenReady;

@@ -59,6 +59,27 @@ TEST(SlicerProgress, ThreeStages_TagsOnePerLineMonotoneEndingAtOne)
   EXPECT_NE(text.find("<filter-end>\n<filter-name>WriteOutputs</filter-name>\n<filter-time>"), std::string::npos);
 }
 
+// A stage whose work ran on the second core (the wall stage) reports that work's time, not the
+// instant its result was taken (issue 34: "SegmentOuterWall 0.00 s"); the next stage its own again.
+TEST(SlicerProgress, OwnTime_IsTheStagesTimeUntilTheNextBegin)
+{
+  std::ostringstream out;
+  SlicerProgress progress(out, { { "FitStent", 1.0 }, { "SegmentOuterWall", 1.0 }, { "Measure", 1.0 } });
+  progress.Begin("FitStent", "fit");
+  progress.Begin("SegmentOuterWall", "wall");
+  progress.SetOwnTime(0.437);
+  progress.Begin("Measure", "measure");
+  progress.End();
+  const std::string text = out.str();
+  EXPECT_NE(text.find("<filter-name>SegmentOuterWall</filter-name>\n<filter-time>0.437</filter-time>"),
+            std::string::npos)
+    << text;
+  const std::string measureEnd = "<filter-end>\n<filter-name>Measure</filter-name>\n<filter-time>";
+  const auto measure = text.find(measureEnd);
+  ASSERT_NE(measure, std::string::npos);
+  EXPECT_LT(std::stod(text.substr(measure + measureEnd.size())), 0.4); // its own short time, not 0.437 s
+}
+
 TEST(SlicerProgress, UndeclaredStage_LogicError)
 {
   std::ostringstream out;

@@ -1,0 +1,265 @@
+// Branches and vessels followed through the skeleton graph (AortoIliacSteps.h).
+#include "Centerlines/AortoIliacSteps.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <set>
+
+#include "Centerlines/LimbDivergence.h"
+#include "Centerlines/SmoothCenterline.h"
+#include "Centerlines/VesselOrigins.h"
+#include "Common/Errors.h"
+#include "Common/Format.h"
+#include "Common/Median.h"
+
+namespace sgp::aorto_iliac
+{
+
+namespace
+{
+
+/// The widest way on from `node` other than `incoming`, or −1 at an end.
+int WidestContinuation(const SkeletonGraph& graph, int node, int incoming, double reach)
+{
+  int best = -1;
+  double bestRadius = -1.0;
+  for (int e : graph.nodes[node].edges)
+    if (e != incoming && graph.edges[e].a != graph.edges[e].b)
+    {
+      const double r = BranchRadius(graph, e, node, reach);
+      if (r > bestRadius)
+        best = e, bestRadius = r;
+    }
+  return best;
+}
+
+/// How far a side branch must run outside its parent's wall before its direction is read, mm (as
+/// the renal axis of ProximalSite.h, which starts 1 mm outside the wall).
+constexpr double outsideParentStartMm = 1.0;
+
+/// True when an end point (degree 1) can be reached through `edge` from `node` without passing
+/// `node` or a node of `blocked`.
+bool LeadsToANewEnd(const SkeletonGraph& graph, int node, int edge, const std::set<int>& blocked)
+{
+  std::set<int> seen{ node };
+  std::vector<int> stack{ graph.Other(edge, node) };
+  while (!stack.empty())
+  {
+    const int n = stack.back();
+    stack.pop_back();
+    if (blocked.count(n) || !seen.insert(n).second)
+      continue;
+    if (graph.Degree(n) == 1)
+      return true;
+    for (int e : graph.nodes[n].edges)
+      stack.push_back(graph.Other(e, n));
+  }
+  return false;
+}
+
+} // namespace
+
+/// Median radius of `edge` leaving `node`, beyond the junction's own radius (where the
+/// inscribed sphere still touches the parent vessel) and within `reach` mm after it.
+double BranchRadius(const SkeletonGraph& graph, int edge, int node, double reach)
+{
+  const auto points = PointsFrom(graph, edge, node);
+  const auto radii = RadiiFrom(graph, edge, node);
+  const double from = graph.Degree(node) >= 3 ? graph.nodes[node].radiusMm : 0.0;
+  std::vector<double> inside, all;
+  double s = 0.0;
+  for (std::size_t i = 1; i < points.size(); ++i)
+  {
+    s += (points[i] - points[i - 1]).norm();
+    all.push_back(radii[i]);
+    if (s >= from && s <= from + reach)
+      inside.push_back(radii[i]);
+  }
+  return Median(inside.empty() ? all : inside);
+}
+
+Eigen::Vector3d BranchDirection(const SkeletonGraph& graph, int edge, int node, double reach)
+{
+  const Point3 origin = graph.nodes[node].position;
+  Point3 last = origin;
+  double s = 0.0;
+  std::set<int> seen{ node };
+  for (int e = edge, from = node; e >= 0;)
+  {
+    const auto points = PointsFrom(graph, e, from);
+    for (std::size_t i = 1; i < points.size(); ++i)
+    {
+      s += (points[i] - points[i - 1]).norm();
+      last = points[i];
+      if (s >= reach)
+        return (last - origin).normalized();
+    }
+    from = graph.Other(e, from);
+    if (!seen.insert(from).second)
+      break;
+    e = WidestContinuation(graph, from, e, reach);
+  }
+  return (last - origin).norm() > 0 ? Eigen::Vector3d((last - origin).normalized()) : Eigen::Vector3d::Zero();
+}
+
+Eigen::Vector3d DirectionOutsideParent(const std::vector<Point3>& branch,
+                                       const Centerline& parent,
+                                       double reach,
+                                       const Eigen::Vector3d& fromJunction)
+{
+  const auto outside = [&](const Point3& p)
+  {
+    double distance = 0.0;
+    const double s = ProjectOntoCenterline(parent, p, &distance);
+    return distance - RadiusAt(parent, s);
+  };
+  std::size_t start = 0;
+  while (start < branch.size() && outside(branch[start]) < outsideParentStartMm)
+    ++start;
+  if (start >= branch.size())
+    return fromJunction;
+  double s = 0.0;
+  Point3 last = branch[start];
+  for (std::size_t i = start + 1; i < branch.size() && s < reach; ++i)
+  {
+    s += (branch[i] - branch[i - 1]).norm();
+    last = branch[i];
+  }
+  if (s < reach / 4)
+    return fromJunction;
+  return (last - branch[start]).normalized();
+}
+
+Eigen::Vector3d OffsetOutsideParent(const std::vector<Point3>& branch, const Centerline& parent)
+{
+  for (const Point3& p : branch)
+  {
+    double distance = 0.0;
+    const double s = ProjectOntoCenterline(parent, p, &distance);
+    if (distance - RadiusAt(parent, s) < outsideParentStartMm)
+      continue;
+    const Eigen::Vector3d t = TangentAt(parent, s);
+    const Eigen::Vector3d w = p - PositionAt(parent, s);
+    const Eigen::Vector3d radial = w - w.dot(t) * t;
+    return radial.norm() > 1e-9 ? Eigen::Vector3d(radial.normalized()) : Eigen::Vector3d::Zero();
+  }
+  return Eigen::Vector3d::Zero();
+}
+
+double ReachableLength(const SkeletonGraph& graph, int edge, int node)
+{
+  std::set<int> seenEdges{ edge }, seenNodes{ node };
+  std::vector<int> stack{ graph.Other(edge, node) };
+  double length = graph.edges[edge].lengthMm;
+  while (!stack.empty())
+  {
+    const int n = stack.back();
+    stack.pop_back();
+    if (!seenNodes.insert(n).second)
+      continue;
+    for (int e : graph.nodes[n].edges)
+      if (seenEdges.insert(e).second)
+      {
+        length += graph.edges[e].lengthMm;
+        stack.push_back(graph.Other(e, n));
+      }
+  }
+  return length;
+}
+
+double PathLength(const std::vector<Point3>& points)
+{
+  double s = 0.0;
+  for (std::size_t i = 1; i < points.size(); ++i)
+    s += (points[i] - points[i - 1]).norm();
+  return s;
+}
+
+VesselPath FollowVessel(const SkeletonGraph& graph, int start, int firstEdge, std::set<int> blocked, double reach)
+{
+  VesselPath path;
+  path.points = PointsFrom(graph, firstEdge, start);
+  path.radii = RadiiFrom(graph, firstEdge, start);
+  path.nodes.push_back(start);
+  blocked.insert(start);
+  int node = graph.Other(firstEdge, start), incoming = firstEdge;
+  while (blocked.insert(node).second)
+  {
+    path.nodes.push_back(node);
+    // Ways on that reach an end the path has not passed: a loop in the skeleton (a tunnel through
+    // a sac) leads only back into the path, and taken, it ended the aorta in the sac.
+    std::vector<int> options;
+    for (int e : graph.nodes[node].edges)
+      if (e != incoming && graph.edges[e].a != graph.edges[e].b && LeadsToANewEnd(graph, node, e, blocked))
+        options.push_back(e);
+    if (options.empty())
+      break;
+    // Incoming direction over the last `reach` mm.
+    std::size_t back = path.points.size() - 1;
+    double s = 0.0;
+    while (back > 0 && s < reach)
+    {
+      s += (path.points[back] - path.points[back - 1]).norm();
+      --back;
+    }
+    const Eigen::Vector3d in = (path.points.back() - path.points[back]).normalized();
+    int best = -1;
+    double bestScore = -1.0;
+    for (int e : options)
+    {
+      const double turn = in.dot(BranchDirection(graph, e, node, reach));
+      const double score = BranchRadius(graph, e, node, reach) * (1.0 + turn) / 2.0;
+      if (score > bestScore)
+        best = e, bestScore = score;
+    }
+    VesselPath::Junction junction{ node, PathLength(path.points), {} };
+    for (int e : options)
+      if (e != best)
+        junction.sideEdges.push_back(e);
+    path.junctions.push_back(junction);
+    const auto more = PointsFrom(graph, best, node);
+    const auto moreRadii = RadiiFrom(graph, best, node);
+    path.points.insert(path.points.end(), more.begin() + 1, more.end());
+    path.radii.insert(path.radii.end(), moreRadii.begin() + 1, moreRadii.end());
+    incoming = best;
+    node = graph.Other(best, node);
+  }
+  return path;
+}
+
+double LongestPathMm(const SkeletonGraph& graph)
+{
+  const auto farthest = [&](int source)
+  {
+    std::vector<double> d(graph.nodes.size(), std::numeric_limits<double>::max());
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    d[source] = 0.0;
+    queue.push({ 0.0, source });
+    while (!queue.empty())
+    {
+      const auto [dist, n] = queue.top();
+      queue.pop();
+      if (dist > d[n])
+        continue;
+      for (int e : graph.nodes[n].edges)
+      {
+        const int m = graph.Other(e, n);
+        if (dist + graph.edges[e].lengthMm < d[m])
+          queue.push({ d[m] = dist + graph.edges[e].lengthMm, m });
+      }
+    }
+    int best = source;
+    for (int n = 0; n < int(d.size()); ++n)
+      if (d[n] < std::numeric_limits<double>::max() && d[n] > d[best])
+        best = n;
+    return std::make_pair(best, d[best]);
+  };
+  return graph.nodes.empty() ? 0.0 : farthest(farthest(0).first).second;
+}
+
+} // namespace sgp::aorto_iliac

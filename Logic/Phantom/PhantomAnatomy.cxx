@@ -1,0 +1,449 @@
+// The synthetic phantom's anatomy: tubes, kidneys, column and wall, and their truth (PhantomAnatomy.h).
+#include "Phantom/PhantomAnatomy.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <memory>
+
+#include <Eigen/Dense>
+
+#include "Common/Errors.h"
+#include "Common/Format.h"
+
+namespace sgp::phantom
+{
+
+namespace
+{
+
+Point3 Unit(double x, double y, double z)
+{
+  return Point3(x, y, z).normalized();
+}
+
+Tube StraightTube(const std::string& name, const std::vector<Point3>& axis, double radius)
+{
+  return { name, axis, [radius](double) { return radius; }, radius };
+}
+
+/// A tube along a sampled curve whose radius is given at each vertex (linear in arc length between).
+Tube SampledTube(const std::string& name, const std::vector<Point3>& axis, const std::vector<double>& radii)
+{
+  std::vector<double> s(axis.size(), 0.0);
+  for (std::size_t k = 1; k < axis.size(); ++k)
+    s[k] = s[k - 1] + (axis[k] - axis[k - 1]).norm();
+  const double largest = *std::max_element(radii.begin(), radii.end());
+  return { name, axis,
+           [s, radii](double at)
+           {
+             const auto upper = std::upper_bound(s.begin(), s.end(), at);
+             if (upper == s.begin())
+               return radii.front();
+             if (upper == s.end())
+               return radii.back();
+             const std::size_t k = static_cast<std::size_t>(upper - s.begin());
+             const double t = (at - s[k - 1]) / (s[k] - s[k - 1]);
+             return (1 - t) * radii[k - 1] + t * radii[k];
+           },
+           largest };
+}
+
+/// How far below the point where a branch of radius `rho` leaves a vessel's axis (direction `a`,
+/// lumen radius `R` there) the lowest point of its ostium on the vessel's wall lies, along `a`:
+/// the lowest point, over the branch's surface (p = t·d + ρ·e, e ⊥ d, at every 0.1° of e) where it
+/// crosses the vessel's wall cylinder (|p − (p·a)a| = R, the outer root in t). ρ exactly for a
+/// branch perpendicular to the vessel.
+double OstiumLowerEdgeDepthMm(double R, double rho, const Eigen::Vector3d& d, const Eigen::Vector3d& a)
+{
+  const Eigen::Vector3d e1 = d.unitOrthogonal(), e2 = d.cross(e1);
+  const auto radial = [&a](const Eigen::Vector3d& v) { return Eigen::Vector3d(v - v.dot(a) * a); };
+  const Eigen::Vector3d pd = radial(d);
+  double lowest = 0.0;
+  for (int k = 0; k < 3600; ++k)
+  {
+    const double psi = 2.0 * pi * k / 3600.0;
+    const Eigen::Vector3d e = std::cos(psi) * e1 + std::sin(psi) * e2, pe = radial(e);
+    const double qa = pd.squaredNorm(), qb = 2.0 * rho * pd.dot(pe), qc = rho * rho * pe.squaredNorm() - R * R;
+    const double t = (-qb + std::sqrt(std::max(0.0, qb * qb - 4.0 * qa * qc))) / (2.0 * qa);
+    lowest = std::min(lowest, t * d.dot(a) + rho * e.dot(a));
+  }
+  return -lowest;
+}
+
+/// A renal artery from `origin` (on the aortic axis) toward `hilum`: whole, cut `renalStubMm`
+/// outside the aortic lumen (radius `aorticRadius`), or dividing `renalDivisionMm` outside it into
+/// an upper and a lower branch turned ±renalBranchTurnDeg in the vertical plane of its course.
+void AddRenal(Anatomy& anatomy,
+              const std::string& name,
+              const Point3& origin,
+              const Point3& hilum,
+              double radius,
+              double aorticRadius,
+              const PhantomParams& p)
+{
+  const Eigen::Vector3d d = (hilum - origin).normalized();
+  // Along the course, the lumen's wall lies where the horizontal distance reaches the aortic radius.
+  const double horizontal = std::hypot(d.x(), d.y());
+  const double toWall = aorticRadius / std::max(horizontal, 1e-6);
+  if (p.renalStubMm > 0.0)
+  {
+    anatomy.tubes.push_back(StraightTube(name, { origin, origin + (toWall + p.renalStubMm) * d }, radius));
+    return;
+  }
+  if (p.renalDivisionMm > 0.0)
+  {
+    const Point3 division = origin + (toWall + p.renalDivisionMm) * d;
+    const double rest = (hilum - division).norm();
+    // The vertical plane of the course: its horizontal part and z.
+    const Eigen::Vector3d h = Eigen::Vector3d(d.x(), d.y(), 0.0).normalized();
+    const double angle = std::atan2(d.z(), horizontal), turn = renalBranchTurnDeg * pi / 180.0;
+    anatomy.tubes.push_back(StraightTube(name, { origin, division }, radius));
+    for (const double sign : { 1.0, -1.0 })
+    {
+      const double a = angle + sign * turn;
+      const Eigen::Vector3d b = std::cos(a) * h + Eigen::Vector3d(0.0, 0.0, std::sin(a));
+      anatomy.tubes.push_back(
+        StraightTube(name + (sign > 0 ? "Upper" : "Lower"), { division, division + rest * b }, renalBranchRadiusMm));
+    }
+    return;
+  }
+  anatomy.tubes.push_back(StraightTube(name, { origin, hilum }, radius));
+}
+
+} // namespace
+
+Anatomy BuildAnatomy(const PhantomParams& p)
+{
+  Anatomy anatomy;
+  PhantomTruth& truth = anatomy.truth;
+  const double rNeck = p.neckDiameterMm / 2, rDistal = p.distalNeckDiameterMm / 2;
+  const double sacBottom = distalNeckLengthMm, sacTop = sacBottom + p.aneurysmLengthMm;
+  const double siteZ = sacTop + p.neckLengthMm; // lower edge of the lowest (right) renal ostium
+  const double smaZ = siteZ + 20.0, coeliacZ = siteZ + 35.0, topZ = siteZ + p.aortaAboveSiteMm;
+  const double amplitude = p.maxAneurysmDiameterMm / 2 - 0.5 * (rNeck + rDistal);
+  const auto radiusAtZ = [=](double z)
+  {
+    if (z >= sacTop)
+      return rNeck;
+    if (z < sacBottom)
+      return rDistal;
+    const double u = (sacTop - z) / (sacTop - sacBottom);
+    // A half sine: the sac starts at a shoulder (slope πA/L), so the neck has a definite end.
+    return rNeck + (rDistal - rNeck) * u + amplitude * std::sin(pi * u);
+  };
+  double rMax = 0.0, zMax = sacTop;
+  for (double z = sacBottom; z <= sacTop; z += 0.01)
+  {
+    if (radiusAtZ(z) > rMax)
+    {
+      rMax = radiusAtZ(z);
+      zMax = z;
+    }
+  }
+  // The sac's axis is vertical; above the sac the neck leans anteriorly by the neck angle β.
+  // onAxis(h) is the point at height h along the straight model, carried onto the bent axis (arc
+  // length is kept, so the radius profile and every length along the aorta are unchanged).
+  const double beta = p.neckAngleDeg * pi / 180.0;
+  const Eigen::Vector3d neckDirection(0.0, -std::sin(beta), std::cos(beta));
+  const auto onAxis = [=](double h)
+  { return h <= sacTop ? Point3(0, 0, h) : Point3(Point3(0, 0, sacTop) + (h - sacTop) * neckDirection); };
+  anatomy.siteZ = siteZ;
+  const double wallMm = p.wallThicknessMm;
+  if (wallMm > 0.0)
+    anatomy.wall = std::make_unique<AorticWall>(p, radiusAtZ, sacBottom, sacTop, siteZ, topZ, beta);
+  const AorticWall* wall = anatomy.wall.get();
+  // The renals run horizontally to their hila; the right one leaves the neck's axis so that its
+  // ostium's lowest point on the lumen's wall is at the site.
+  // A variant's renal is turned by the takeoff angle about the vertical (anterior: toward −y) and
+  // tilted down by the descent; at 0° both are the exact identity.
+  const double takeoff = p.renalTakeoffDeg * pi / 180.0, descent = p.renalDescentDeg * pi / 180.0;
+  const auto renalCourse = [=](double lateral)
+  {
+    const Point3 h(lateral * renalHilumLateralMm, renalHilumPosteriorMm, 0.0);
+    const double turn = -lateral * takeoff; // rotates the right (−x) and the left (+x) renal toward −y
+    const Point3 turned(h.x() * std::cos(turn) - h.y() * std::sin(turn),
+                        h.x() * std::sin(turn) + h.y() * std::cos(turn), 0.0);
+    return Point3(std::cos(descent) * turned + Point3(0.0, 0.0, -std::sin(descent) * turned.norm()));
+  };
+  const Eigen::Vector3d rightRenalDirection = renalCourse(-1.0).normalized();
+  const double siteLumenRadius = wall ? wall->LumenRadius(siteZ) : rNeck;
+  const double rightRenalZ =
+    siteZ + OstiumLowerEdgeDepthMm(siteLumenRadius, renalRadiusMm, rightRenalDirection, neckDirection);
+  const double leftRenalZ = rightRenalZ + 6.0;
+  if (wall && wall->HasThrombus())
+  {
+    // The lumen off-centre in the thrombus: a tube along its own centerline (2 mm samples; the
+    // offset is a half-sine, so the chords stay within 0.01 mm of the curve).
+    std::vector<Point3> lumenAxis;
+    std::vector<double> lumenRadii;
+    wall->SampleLumen(2.0, lumenAxis, lumenRadii);
+    anatomy.tubes.push_back(SampledTube("aorta", lumenAxis, lumenRadii));
+  }
+  else
+  {
+    anatomy.tubes.push_back({ "aorta",
+                              { onAxis(topZ), onAxis(sacTop), Point3(0, 0, 0) },
+                              [=](double s) { return radiusAtZ(topZ - s) - wallMm; },
+                              std::max({ rNeck, rDistal, rMax }) - wallMm });
+  }
+
+  const double angle = commonIliacAngleDeg * pi / 180.0;
+  Point3 iliacEnd[2];
+  const char* sideName[2] = { "right", "left" };
+  const double iliacRadius[2] = { p.rightIliacDiameterMm / 2, p.leftIliacDiameterMm / 2 };
+  const double commonIliacLengthMm[2] = { p.rightCommonIliacLengthMm, p.leftCommonIliacLengthMm };
+  for (int side = 0; side < 2; ++side)
+  {
+    const double lateral = side == 0 ? -1.0 : 1.0; // patient right is -x in LPS
+    const std::string prefix = sideName[side];
+    const double r = iliacRadius[side]; // outer; the lumen lies the wall's thickness inside
+    iliacEnd[side] = commonIliacLengthMm[side] * Point3(lateral * std::sin(angle), 0, -std::cos(angle));
+    std::vector<Point3> common{ Point3::Zero(), iliacEnd[side] };
+    if (p.commonIliacKinkDeg > 0.0 && commonIliacLengthMm[side] > kinkFromBifurcationMm + 5.0)
+    {
+      // 10 mm at the usual angle, then the rest turned outward by the kink (the length kept).
+      const double turned = angle + p.commonIliacKinkDeg * pi / 180.0;
+      const Point3 kink = kinkFromBifurcationMm * Point3(lateral * std::sin(angle), 0, -std::cos(angle));
+      iliacEnd[side] = kink + (commonIliacLengthMm[side] - kinkFromBifurcationMm) *
+                                Point3(lateral * std::sin(turned), 0, -std::cos(turned));
+      common = { Point3::Zero(), kink, iliacEnd[side] };
+    }
+    const std::vector<Point3> external{ iliacEnd[side], iliacEnd[side] + 70.0 * Unit(lateral * 0.17, -0.15, -0.97) };
+    const std::vector<Point3> internal{
+      iliacEnd[side], iliacEnd[side] + 40.0 * (p.posteriorInternalIliac ? Unit(lateral * 0.15, 0.85, -0.5)
+                                                                        : Unit(lateral * 0.45, 0.55, -0.7))
+    };
+    // The smaller branches' walls at most a third of their radius (a 2 mm wall would close a
+    // 3 mm internal iliac).
+    const auto lumenOf = [wallMm](double outer) { return outer - std::min(wallMm, outer / 3.0); };
+    anatomy.tubes.push_back(StraightTube(prefix + "Iliac", common, r - wallMm));
+    anatomy.tubes.push_back(StraightTube(prefix + "ExternalIliac", external, lumenOf(0.75 * r)));
+    anatomy.tubes.push_back(StraightTube(prefix + "InternalIliac", internal, lumenOf(0.55 * r)));
+    (side == 0 ? truth.sizing.rightInternalIliacRadius : truth.sizing.leftInternalIliacRadius) = lumenOf(0.55 * r);
+    // The internal iliac's ostium on the common iliac's wall: its most upstream point along the
+    // common iliac's axis (the branch leaves that axis at its end; an oblique branch's ostium starts
+    // there, where the common iliac divides).
+    const Eigen::Vector3d commonAxis = (common.back() - common[common.size() - 2]).normalized();
+    (side == 0 ? truth.sizing.rightInternalIliacOstium : truth.sizing.leftInternalIliacOstium) =
+      commonIliacLengthMm[side] -
+      OstiumLowerEdgeDepthMm(r - wallMm, lumenOf(0.55 * r), (internal[1] - internal[0]).normalized(), commonAxis);
+    if (wallMm > 0.0)
+    {
+      anatomy.wallTubes.push_back(StraightTube(prefix + "IliacWall", common, r));
+      anatomy.wallTubes.push_back(StraightTube(prefix + "ExternalIliacWall", external, 0.75 * r));
+      anatomy.wallTubes.push_back(StraightTube(prefix + "InternalIliacWall", internal, 0.55 * r));
+    }
+    const double renalZ = side == 0 ? rightRenalZ : leftRenalZ;
+    const Point3 hilum = onAxis(renalZ) + renalCourse(lateral);
+    if (p.includeRenals)
+      AddRenal(anatomy, prefix + "Renal", onAxis(renalZ), hilum, renalRadiusMm, siteLumenRadius, p);
+    if (p.includeKidneys)
+    {
+      anatomy.kidneys.push_back({ onAxis(renalZ) + Point3(lateral * 80.0, 15.0, -10.0), Point3(22.0, 18.0, 50.0) });
+    }
+    truth.landmarks.push_back({ prefix + "RenalOstium", onAxis(renalZ) + Point3(lateral * rNeck, 0, 0) });
+    truth.landmarks.push_back({ prefix + "IliacBifurcation", iliacEnd[side] });
+  }
+  if (p.accessoryRenalOffsetMm != 0.0)
+  {
+    const double z = rightRenalZ + p.accessoryRenalOffsetMm;
+    anatomy.tubes.push_back(
+      StraightTube("rightAccessoryRenal", { onAxis(z), onAxis(z) + Point3(-55.0, 5.0, 0.0) }, accessoryRenalRadiusMm));
+  }
+  if (p.parallelSuperiorMesenteric) // leaves forward, turns down within 10 mm, 5 mm of tissue from the aorta
+    anatomy.tubes.push_back(StraightTube("superiorMesenteric",
+                                         { onAxis(smaZ), onAxis(smaZ) + Point3(0, -(rNeck + 9.0), -6.0),
+                                           onAxis(smaZ) + Point3(0, -(rNeck + 10.0), -30.0),
+                                           onAxis(smaZ) + Point3(0, -(rNeck + 30.0), -70.0) },
+                                         visceralRadiusMm));
+  else
+    anatomy.tubes.push_back(StraightTube(
+      "superiorMesenteric", { onAxis(smaZ), onAxis(smaZ) + Point3(0, -35, -5), onAxis(smaZ) + Point3(0, -45, -60) },
+      visceralRadiusMm));
+  if (p.includeInferiorMesenteric) // from the sac's front at a third of its height, down and to the left
+  {
+    const double z = sacBottom + (sacTop - sacBottom) / 3.0;
+    const double front = radiusAtZ(z);
+    anatomy.tubes.push_back(StraightTube(
+      "inferiorMesenteric",
+      { Point3(0, 0, z), Point3(0, -front - 8.0, z - 6.0), Point3(25.0, -front - 12.0, z - 60.0) }, imaRadiusMm));
+    truth.landmarks.push_back({ "inferiorMesentericOstium", Point3(0, -front, z) });
+  }
+  anatomy.tubes.push_back(
+    StraightTube("coeliac", { onAxis(coeliacZ), onAxis(coeliacZ) + Point3(0, -30, 5) }, visceralRadiusMm));
+  if (p.includeBone)
+  {
+    anatomy.column = true;
+    anatomy.columnY = rMax + p.boneGapMm + vertebraRadiusMm;
+  }
+
+  truth.landmarks.push_back({ "aorticBifurcation", Point3::Zero() });
+  truth.landmarks.push_back({ "proximalImplantationSite", onAxis(siteZ) });
+  truth.landmarks.push_back({ "superiorMesentericOstium", onAxis(smaZ) + Point3(0, -rNeck, 0) });
+  truth.landmarks.push_back({ "coeliacOstium", onAxis(coeliacZ) + Point3(0, -rNeck, 0) });
+  truth.landmarks.push_back({ "maxAneurysmDiameterLevel", Point3(0, 0, zMax) });
+  PhantomSizing& sizing = truth.sizing;
+  sizing.outerProximalNeckDiameter = 2 * radiusAtZ(siteZ);
+  sizing.outerNeckDiameter15mm = 2 * radiusAtZ(siteZ - 15.0);
+  sizing.outerMaxAneurysmDiameter = wall ? std::max(2 * rMax, wall->MaxCaliperMm(0.0, siteZ)) : 2 * rMax;
+  sizing.outerDistalNeckMinDiameter = 2 * rDistal;
+  sizing.outerRightIliacDiameter = p.rightIliacDiameterMm;
+  sizing.outerLeftIliacDiameter = p.leftIliacDiameterMm;
+  // The lumen: the outer wall less the wall, less the thrombus where there is one.
+  const auto lumenRadius = [&](double h) { return wall ? wall->LumenRadius(h) : radiusAtZ(h); };
+  sizing.proximalNeckDiameter = 2 * lumenRadius(siteZ);
+  sizing.neckDiameter15mm = 2 * lumenRadius(siteZ - 15.0);
+  double widestLumen = 0.0, widestH = siteZ;
+  for (double h = 0.0; h <= siteZ; h += 0.01)
+    if (lumenRadius(h) > widestLumen)
+    {
+      widestLumen = lumenRadius(h);
+      widestH = h;
+    }
+  sizing.maxAneurysmDiameter = 2 * widestLumen;
+  double narrowestLumen = widestLumen;
+  for (double h = 0.0; h <= widestH; h += 0.01)
+    narrowestLumen = std::min(narrowestLumen, lumenRadius(h));
+  sizing.distalNeckMinDiameter = 2 * narrowestLumen;
+  sizing.rightIliacDiameter = p.rightIliacDiameterMm - 2 * wallMm;
+  sizing.leftIliacDiameter = p.leftIliacDiameterMm - 2 * wallMm;
+  if (wall)
+  {
+    sizing.thrombusVolumeMl = wall->ThrombusVolumeMl();
+    sizing.maxThrombusThicknessMm = wall->MaxThrombusThicknessMm();
+    sizing.neckThrombusArcPercent = wall->NeckThrombusArcPercent();
+    sizing.neckCalcificationArcPercent = wall->NeckCalcificationArcPercent();
+  }
+  // The clinical neck length (vessel-wall.md, the rule-engine convention): from the site to the
+  // first level where the diameter exceeds (a) by 10 %; past the sac's top by the shoulder's
+  // rise (about 1.6 mm on the default sac), found on the exact radius profile to 1 µm.
+  double z10 = sacTop;
+  while (z10 > sacBottom && radiusAtZ(z10) < 1.1 * rNeck)
+    z10 -= 0.001;
+  sizing.proximalNeckLength = siteZ - z10;
+  // The healthy neck (the seal a graft can get) and where the neck thrombus covers a quarter.
+  sizing.healthyNeckLength = sizing.proximalNeckLength;
+  sizing.neckThrombusBelowSite = std::numeric_limits<double>::infinity();
+  if (wall)
+  {
+    bool healthyEnded = false;
+    for (double h = siteZ; h >= z10; h -= 0.01)
+    {
+      int thick = 0;
+      for (int k = 0; k < 720; ++k) // 0.5° steps
+        thick += wall->ThrombusThicknessAt(h, 0.5 * k) > 2.0 ? 1 : 0;
+      if (!healthyEnded && thick > 0.10 * 720)
+      {
+        sizing.healthyNeckLength = siteZ - h;
+        healthyEnded = true;
+      }
+      if (thick >= 0.25 * 720)
+      {
+        sizing.neckThrombusBelowSite = siteZ - h;
+        break;
+      }
+    }
+  }
+  sizing.proximalSiteToBifurcationLength = siteZ;
+  sizing.rightIliacLength = p.rightCommonIliacLengthMm;
+  sizing.leftIliacLength = p.leftCommonIliacLengthMm;
+  sizing.neckAngleBetaDeg = p.neckAngleDeg;
+  // On the aneurysm lumen's axis at mid-sac (off the vessel's axis where there is a thrombus).
+  const double seedH = 0.5 * (sacTop + sacBottom);
+  truth.seedLps = Point3(0, 0, seedH);
+  if (wall)
+  {
+    const auto frame = wall->Frame(seedH);
+    const Eigen::Vector2d c = wall->LumenCentre(seedH);
+    truth.seedLps += c.x() * frame[0] + c.y() * frame[1];
+  }
+  return anatomy;
+}
+
+void SampleVessels(const Anatomy& anatomy, PhantomTruth& truth)
+{
+  for (const Tube& tube : anatomy.tubes)
+  {
+    std::vector<Point3> points;
+    std::vector<double> radii, abscissa;
+    double start = 0.0;
+    for (std::size_t k = 0; k + 1 < tube.axis.size(); ++k)
+    {
+      const Point3 a = tube.axis[k], b = tube.axis[k + 1];
+      const double length = (b - a).norm();
+      for (double s = 0.0; s < length; s += 1.0)
+      {
+        points.push_back(a + (b - a) * (s / length));
+        radii.push_back(tube.radiusAt(start + s));
+        abscissa.push_back(start + s);
+      }
+      start += length;
+    }
+    points.push_back(tube.axis.back());
+    radii.push_back(tube.radiusAt(start));
+    abscissa.push_back(start);
+    PhantomVessel vessel{ tube.name, Points(points.size(), 3), Eigen::VectorXd(radii.size()),
+                          Eigen::VectorXd(radii.size()) };
+    // The largest sphere centred on the axis at s touches the wall where sqrt((s' − s)² + r(s')²)
+    // is smallest (exact on straight pieces; the bent vessels have a constant radius).
+    std::vector<double> fine;
+    for (double s = 0.0; s <= start; s += 0.05)
+      fine.push_back(tube.radiusAt(s));
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      vessel.axis.row(i) = points[i].transpose();
+      vessel.radiusMm[i] = radii[i];
+      const double si = abscissa[i];
+      double inscribed = radii[i];
+      for (std::size_t j = 0; j < fine.size(); ++j)
+        inscribed = std::min(inscribed, std::hypot(0.05 * double(j) - si, fine[j]));
+      vessel.inscribedRadiusMm[i] = inscribed;
+    }
+    truth.vessels.push_back(vessel);
+  }
+}
+
+std::array<Point3, 2> AnatomyBounds(const Anatomy& anatomy)
+{
+  Point3 lo = Point3::Constant(1e9), hi = Point3::Constant(-1e9);
+  for (const Tube& tube : anatomy.tubes)
+  {
+    for (const Point3& v : tube.axis)
+    {
+      lo = lo.cwiseMin(v - Point3::Constant(tube.maxRadius));
+      hi = hi.cwiseMax(v + Point3::Constant(tube.maxRadius));
+    }
+  }
+  for (const Ellipsoid& e : anatomy.kidneys)
+  {
+    lo = lo.cwiseMin(e.centre - e.semiAxes);
+    hi = hi.cwiseMax(e.centre + e.semiAxes);
+  }
+  if (anatomy.wall)
+  {
+    const auto [wallLo, wallHi] = anatomy.wall->BoundsLps(0.0);
+    lo = lo.cwiseMin(wallLo);
+    hi = hi.cwiseMax(wallHi);
+  }
+  if (anatomy.column)
+  {
+    lo = lo.cwiseMin(Point3(-vertebraRadiusMm, anatomy.columnY - vertebraRadiusMm, lo.z()));
+    hi = hi.cwiseMax(Point3(vertebraRadiusMm, anatomy.columnY + vertebraRadiusMm, hi.z()));
+  }
+  return { lo - Point3::Constant(marginMm), hi + Point3::Constant(marginMm) };
+}
+
+std::array<Point3, 2> TubeBox(const Tube& tube, double reach)
+{
+  Point3 lo = Point3::Constant(1e9), hi = Point3::Constant(-1e9);
+  for (const Point3& v : tube.axis)
+  {
+    lo = lo.cwiseMin(v - Point3::Constant(tube.maxRadius + reach));
+    hi = hi.cwiseMax(v + Point3::Constant(tube.maxRadius + reach));
+  }
+  return { lo, hi };
+}
+
+} // namespace sgp::phantom

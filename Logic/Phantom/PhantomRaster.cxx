@@ -1,0 +1,111 @@
+// Drawing the synthetic phantom on its grid (PhantomRaster.h).
+#include "Phantom/PhantomRaster.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <memory>
+
+#include <Eigen/Dense>
+
+#include "Common/Errors.h"
+#include "Common/Format.h"
+
+namespace sgp::phantom
+{
+
+double EdgeProfile(double signedDistance, double sigma)
+{
+  if (sigma <= 0.0)
+  {
+    return signedDistance < 0.0 ? 1.0 : (signedDistance > 0.0 ? 0.0 : 0.5);
+  }
+  return 0.5 * std::erfc(signedDistance / (sigma * std::sqrt(2.0)));
+}
+
+Grid MakeGrid(const PhantomParams& p, const std::array<Point3, 2>& bounds)
+{
+  Grid grid;
+  grid.direction = p.directionLps;
+  grid.spacing = Eigen::Vector3d(p.spacingMm[0], p.spacingMm[1], p.spacingMm[2]);
+  Eigen::Vector3d uMin = Eigen::Vector3d::Constant(1e18), uMax = -uMin;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const Point3 c((corner & 1 ? bounds[1] : bounds[0]).x(), (corner & 2 ? bounds[1] : bounds[0]).y(),
+                   (corner & 4 ? bounds[1] : bounds[0]).z());
+    const Eigen::Vector3d u = grid.direction.transpose() * c;
+    uMin = uMin.cwiseMin(u);
+    uMax = uMax.cwiseMax(u);
+  }
+  Eigen::Vector3d first = uMin;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (p.sizeVoxels[a] > 0)
+    {
+      grid.size[a] = p.sizeVoxels[a];
+      first[a] = 0.5 * (uMin[a] + uMax[a]) - 0.5 * (grid.size[a] - 1) * grid.spacing[a];
+    }
+    else
+    {
+      grid.size[a] = static_cast<long>(std::ceil((uMax[a] - uMin[a]) / grid.spacing[a])) + 1;
+    }
+  }
+  grid.origin = grid.direction * first;
+  return grid;
+}
+
+double EllipsoidSignedDistance(const Ellipsoid& e, const Point3& x)
+{
+  const Eigen::Vector3d q = (x - e.centre).cwiseQuotient(e.semiAxes);
+  const double f = q.norm();
+  if (f < 1e-9)
+  {
+    return -e.semiAxes.minCoeff();
+  }
+  const double gradient = (q.cwiseQuotient(e.semiAxes) / f).norm();
+  return (f - 1.0) / gradient;
+}
+
+void DrawAorticWall(const AorticWall& wall,
+                    const PhantomParams& p,
+                    const Grid& grid,
+                    double reach,
+                    std::vector<float>& contrast,
+                    std::vector<unsigned char>& labels)
+{
+  const double outward = wall.ReachMm() + reach;
+  const auto [lo, hi] = wall.BoundsLps(reach);
+  const double sigma = p.blurSigmaMm;
+  ForEachVoxelNear(grid, lo, hi,
+                   [&](long flat, const Point3& x)
+                   {
+                     const AorticWall::Coordinates c = wall.At(x);
+                     if (c.rho > outward || c.beyondMm > reach)
+                       return;
+                     const double ends = c.beyondMm; // past the aorta's top or below the bifurcation
+                     const double outer = std::max(wall.OuterSignedDistance(c), ends);
+                     const double shell = std::max(wall.WallSignedDistance(c), ends);
+                     float value = contrast[flat];
+                     unsigned char label = labels[flat];
+                     const auto take = [&](double hu, double sd, unsigned char l, bool inside)
+                     {
+                       value = std::max(value, float((hu - p.tissueHu) * EdgeProfile(sd, sigma)));
+                       if (inside && sd < 0.0)
+                         label = l;
+                     };
+                     // Lowest priority first: each later label overwrites.
+                     for (const WallNeighbour& n : wall.Neighbours())
+                       take(n.hu, std::max(wall.NeighbourSignedDistance(c, n), ends), n.label, true);
+                     if (wall.HasThrombus())
+                       take(p.thrombusHu, outer, ThrombusLabel, true);
+                     take(p.wallHu, shell, WallLabel, true);
+                     for (const WallCalcification& w : wall.Calcifications())
+                       take(p.calcificationHu, std::max(wall.CalcificationSignedDistance(c, w), ends), CalciumLabel,
+                            true);
+                     contrast[flat] = value;
+                     labels[flat] = label;
+                   });
+}
+
+} // namespace sgp::phantom
