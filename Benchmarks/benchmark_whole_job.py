@@ -113,7 +113,7 @@ def memory_rows(build, work):
 
 
 def whole_job_rows(build, work, repeat=3):
-    """[(measurement, result, target, met)] for the README table."""
+    """[(measurement, result, target, met)] for the table in docs/development.md."""
     os.makedirs(work, exist_ok=True)
     reader = os.path.join(build, "Benchmarks", "sgpReadVolume")
     volume, seed = make_phantom(build, work, "phantom-512", "0.7,0.7,1.0", "512,512,400")

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Runs StentGraftPlanner's benchmarks and prints the side-by-side table for the README.
+"""Runs StentGraftPlanner's benchmarks and prints the side-by-side table for docs/development.md.
 
 Usage: run_benchmarks.py BUILD_DIR [--workdir DIR]
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The dependency rule of Logic/ (README "Layout"; Logic/CMakeLists.txt): a stage folder includes
+"""The dependency rule of Logic/ (docs/development.md "Layout"; Logic/CMakeLists.txt): a stage folder includes
 only the shared vocabulary and the stages before it in DESIGN.md's data flow; Phantom only the
 shared vocabulary; IO anything in Logic; nothing in Logic includes the CLI, tclap or a *CLP.h, and
 only IO includes ITK/VTK readers or writers; and no file in Logic is longer than MAX_LINES (issue 34:
@@ -33,7 +33,7 @@ def main():
         if not os.path.isdir(path):
             continue
         if folder not in ALLOWED:
-            print(f"FAIL: Logic/{folder} is not a known stage folder; add it to the rule (README, CMake, this test)")
+            print(f"FAIL: Logic/{folder} is not a known stage folder; add it to the rule (docs/development.md, CMake, this test)")
             failed += 1
             continue
         for name in sorted(os.listdir(path)):
