@@ -3,15 +3,16 @@
 // elapsed time). Written for the stub from SEM's header's documented fields; none of its code.
 #pragma once
 
-extern "C" {
-struct ModuleProcessInformation
+extern "C"
 {
-  unsigned char Abort;
-  float Progress;
-  float StageProgress;
-  char ProgressMessage[1024];
-  void (*ProgressCallbackFunction)(void*);
-  void* ProgressCallbackClientData;
-  double ElapsedTime;
-};
+  struct ModuleProcessInformation
+  {
+    unsigned char Abort;
+    float Progress;
+    float StageProgress;
+    char ProgressMessage[1024];
+    void (*ProgressCallbackFunction)(void*);
+    void* ProgressCallbackClientData;
+    double ElapsedTime;
+  };
 }
