@@ -100,6 +100,27 @@ double StraightenedStepMm(const CtImage& ct)
 /// Across the straightened volume: ±40 mm holds a 66 mm sac with its wall.
 constexpr double StraightenedHalfWidthMm = 40.0;
 
+/// The simulated graft: its components per vertex and the fit check's values (WriteStentModel.h).
+void WriteSimulatedGraft(const RepairPlan& plan, const std::string& path)
+{
+  const GraftLayout& layout = plan.graft.layout;
+  Eigen::VectorXd role(layout.component.size());
+  for (Eigen::Index i = 0; i < role.size(); ++i)
+    role[i] = double(int(layout.components[std::size_t(layout.component[i])].role));
+  WriteStentModel(layout.mesh, plan.graft.fit.V, plan.graft.fit.radiusMm, plan.graft.fit.wallDistanceMm,
+                  { { "Component", layout.component.cast<double>() },
+                    { "ComponentRole", role },
+                    { "InnerComponent", layout.innerComponent.cast<double>() },
+                    { "NominalRadius", layout.nominalRadiusMm },
+                    { "Oversizing", plan.fitCheck.oversizingPercent },
+                    { "Apposition", plan.fitCheck.appositionMm },
+                    { "HealthyWall", plan.fitCheck.healthyWall.cast<double>() },
+                    { "ThrombusUnder", plan.fitCheck.thrombusUnderMm },
+                    { "Calcified", plan.fitCheck.calcified.cast<double>() },
+                    { "Sealing", plan.fitCheck.sealing.cast<double>() } },
+                  path);
+}
+
 } // namespace
 
 PlanRequest PlanRequestFor(const PlanOutputPaths& paths)
@@ -161,25 +182,8 @@ void WritePlanOutputs(const RepairPlan& plan,
     if (!plan.HasGraft())
       WriteNotSimulatedModel(plan.notSimulatedReason.empty() ? "No graft was simulated" : plan.notSimulatedReason,
                              outputs.Stage(paths.simulatedStentModel));
-  }
-  if (!paths.simulatedStentModel.empty() && plan.HasGraft())
-  {
-    const GraftLayout& layout = plan.graft.layout;
-    Eigen::VectorXd role(layout.component.size());
-    for (Eigen::Index i = 0; i < role.size(); ++i)
-      role[i] = double(int(layout.components[std::size_t(layout.component[i])].role));
-    WriteStentModel(layout.mesh, plan.graft.fit.V, plan.graft.fit.radiusMm, plan.graft.fit.wallDistanceMm,
-                    { { "Component", layout.component.cast<double>() },
-                      { "ComponentRole", role },
-                      { "InnerComponent", layout.innerComponent.cast<double>() },
-                      { "NominalRadius", layout.nominalRadiusMm },
-                      { "Oversizing", plan.fitCheck.oversizingPercent },
-                      { "Apposition", plan.fitCheck.appositionMm },
-                      { "HealthyWall", plan.fitCheck.healthyWall.cast<double>() },
-                      { "ThrombusUnder", plan.fitCheck.thrombusUnderMm },
-                      { "Calcified", plan.fitCheck.calcified.cast<double>() },
-                      { "Sealing", plan.fitCheck.sealing.cast<double>() } },
-                    outputs.Stage(paths.simulatedStentModel));
+    else
+      WriteSimulatedGraft(plan, outputs.Stage(paths.simulatedStentModel));
   }
   if (!paths.wallLabelMap.empty())
   {

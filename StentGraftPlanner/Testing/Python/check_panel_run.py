@@ -28,7 +28,6 @@ import csv
 import json
 import os
 import shutil
-import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -36,31 +35,17 @@ sys.path.insert(0, os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "Testing", "CLI"))
 from StentGraftPlannerLib import CliRun, Outcome, Results, Settings  # noqa: E402
 import sem_rules  # noqa: E402
-
-TIMEOUT_S = 900  # the 2-core machine, a 1 x 1 x 1.5 mm phantom
-results = []
+from test_bad_input import check, results  # noqa: E402
+from test_bad_input import run as run_cli_process  # noqa: E402
 
 #: The file Slicer writes or reads for each output node class (its default storage extension).
 EXTENSIONS = {"vtkMRMLLabelMapVolumeNode": ".nrrd", "vtkMRMLScalarVolumeNode": ".nrrd", "vtkMRMLModelNode": ".vtp",
               "vtkMRMLTableNode": ".csv", "vtkMRMLMarkupsFiducialNode": ".mrk.json"}
 
 
-def check(ok, what, detail=""):
-    results.append(bool(ok))
-    print(f"{'PASS' if ok else 'FAIL'}: {what}" + (f" -- {detail}" if detail and not ok else ""))
-    return ok
-
-
 def run(argv, cwd):
     print("RUN: " + " ".join(argv))
-    try:
-        result = subprocess.run(argv, capture_output=True, timeout=TIMEOUT_S, cwd=cwd,
-                                env=dict(os.environ, ITK_AUTOLOAD_PATH=""))
-    except subprocess.TimeoutExpired as expired:
-        result = subprocess.CompletedProcess(argv, None, expired.stdout or b"", expired.stderr or b"")
-    result.stdout = result.stdout.decode("utf-8", errors="replace")
-    result.stderr = result.stderr.decode("utf-8", errors="replace")
-    return result
+    return run_cli_process(argv, cwd)
 
 
 def read_model(path):
