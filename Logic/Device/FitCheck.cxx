@@ -381,6 +381,16 @@ FitCheck CheckGraftFit(const DeployedGraft& graft,
                          " seals from its proximal edge down to " + Mm(c.proximalSealLengthMm) + " below it" +
                          (c.proximalSealEnd.empty() ? "" : ", where " + c.proximalSealEnd));
   }
+  else if (c.proximalSealLengthMm < p.minimumProximalSealMm + p.sealUncertaintyMm)
+  {
+    c.migrationRisk = true;
+    c.findings.push_back("type Ia endoleak and migration risk cannot be excluded: proximal seal " +
+                         Mm(c.proximalSealLengthMm) + ", within its uncertainty (" + Mm(p.sealUncertaintyMm) +
+                         ": the site's 1 mm and the wall planes' 1 mm) of the " +
+                         FormatNumber(p.minimumProximalSealMm, 0) + " mm needed — the " + ComponentWords(body) +
+                         " seals from its proximal edge down to " + Mm(c.proximalSealLengthMm) + " below it" +
+                         (c.proximalSealEnd.empty() ? "" : ", where " + c.proximalSealEnd));
+  }
   const double iliacMinimum =
     std::isfinite(context.minimumIliacSealMm) ? context.minimumIliacSealMm : p.minimumIliacSealMm;
   c.minimumProximalSealMm = p.minimumProximalSealMm;

@@ -44,6 +44,7 @@
 ///
 /// Findings (one line each, naming the component and the level; none = the fit check passed):
 ///  - type Ia risk: proximal seal shorter than `minimumProximalSealMm` (10 mm), and why it ends;
+///    within `sealUncertaintyMm` above it the risk "cannot be excluded" (flagged all the same);
 ///  - type Ib risk: an iliac seal shorter than the family's minimum iliac seal;
 ///  - type III risk: an overlap (limb in the gate or leg, extension in a limb) below the family's
 ///    minimum — measured on the deployed positions;
@@ -83,8 +84,13 @@ struct FitCheckParams
   bool calciumSeals = true;           ///< calcium under a vertex: it seals (flagged) when true
   double oversizingMinPercent = 10.0; ///< evar-sizing.md §2.3: 10–25 %
   double oversizingMaxPercent = 25.0;
-  double infoldingPercent = 30.0;        ///< over this: infolding (device-configuration.md §2.3, SBC 2010)
-  double minimumProximalSealMm = 10.0;   ///< shorter: migration and type Ia endoleak risk
+  double infoldingPercent = 30.0;      ///< over this: infolding (device-configuration.md §2.3, SBC 2010)
+  double minimumProximalSealMm = 10.0; ///< shorter: migration and type Ia endoleak risk
+  /// The measured proximal seal's uncertainty, mm — the neck length's (NeckLengthUncertaintyMm):
+  /// the proximal site's 1 mm and the wall planes' 1 mm step the seal's end is refined on. A seal
+  /// within it above the minimum cannot exclude the risk: it is flagged too, as "cannot be
+  /// excluded" (issue 32: a 9 mm healthy neck read 10.8 mm, its site 0.8 mm high).
+  double sealUncertaintyMm = 2.0;
   double minimumIliacSealMm = 10.0;      ///< used where the family gives none
   double ostiumOverlapToleranceMm = 0.5; ///< a graft edge at the ostium's edge does not cover it
 };

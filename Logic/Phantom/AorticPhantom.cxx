@@ -6,6 +6,7 @@
 #include <limits>
 #include <memory>
 #include <random>
+#include <unordered_map>
 
 #include <Eigen/Dense>
 
@@ -156,10 +157,15 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
   std::vector<unsigned char> labels(static_cast<std::size_t>(count), TissueLabel);
   const double reach = 4.0 * p.blurSigmaMm + grid.spacing.norm();
 
+  // With a wall the lumens are drawn over it linearly (PhantomRaster.h): `layer` holds the sharp
+  // class under a lumen, and each voxel near a lumen its largest edge profile over the tubes.
+  std::vector<unsigned char> layer;
+  std::unordered_map<long, std::pair<float, float>> nearLumen; // flat → {profile, lumen contrast}
   if (anatomy.wall)
   {
     ReportProgress(progress, 0.0, "Vessel wall");
-    DrawAorticWall(*anatomy.wall, p, grid, reach, contrast, labels);
+    layer.assign(static_cast<std::size_t>(count), static_cast<unsigned char>(UnderLumen::Tissue));
+    DrawAorticWall(*anatomy.wall, p, grid, reach, contrast, labels, layer);
     for (const Tube& tube : anatomy.wallTubes)
     {
       const auto [lo, hi] = TubeBox(tube, reach);
@@ -172,6 +178,8 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
                            std::max(contrast[flat], float((p.wallHu - p.tissueHu) * EdgeProfile(sd, p.blurSigmaMm)));
                          if (sd < 0.0 && labels[flat] == TissueLabel)
                            labels[flat] = WallLabel;
+                         if (sd < 0.0 && layer[flat] == static_cast<unsigned char>(UnderLumen::Tissue))
+                           layer[flat] = static_cast<unsigned char>(UnderLumen::Wall);
                        });
     }
   }
@@ -189,13 +197,41 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
                        // The bolus's cranio-caudal gradient, from the site's level (0 by default).
                        const double lumenContrast =
                          p.lumenHu + p.bolusGradientHuPerCm * (x.z() - anatomy.siteZ) / 10.0 - p.tissueHu;
-                       contrast[flat] = std::max(contrast[flat], float(lumenContrast * EdgeProfile(sd, p.blurSigmaMm)));
+                       const double profile = EdgeProfile(sd, p.blurSigmaMm);
+                       if (layer.empty())
+                         contrast[flat] = std::max(contrast[flat], float(lumenContrast * profile));
+                       else if (profile > 0.0)
+                       {
+                         auto& entry = nearLumen[flat];
+                         if (float(profile) > entry.first)
+                           entry = { float(profile), float(lumenContrast) };
+                       }
                        if (sd < 0.0)
                        {
                          labels[flat] = LumenLabel;
                        }
                      });
   }
+  // Over a wall: what lies under the lumen plus the step from it to the lumen, blurred. The
+  // neighbour pads (psoas, IVC, duodenum, left renal vein) and calcification are drawn over the
+  // vessel by the brightest value, not nested in its layers; the lumen's blur meets them so too.
+  for (const auto& [flat, entry] : nearLumen)
+  {
+    const unsigned char label = labels[static_cast<std::size_t>(flat)];
+    if (label == PsoasLabel || label == IvcLabel || label == DuodenumLabel || label == RenalVeinLabel ||
+        layer[static_cast<std::size_t>(flat)] == static_cast<unsigned char>(UnderLumen::Brighter))
+    {
+      contrast[flat] = std::max(contrast[flat], entry.second * entry.first);
+      continue;
+    }
+    const auto under = static_cast<UnderLumen>(layer[static_cast<std::size_t>(flat)]);
+    const double sharp = under == UnderLumen::Thrombus ? p.thrombusHu - p.tissueHu
+                         : under == UnderLumen::Wall   ? p.wallHu - p.tissueHu
+                                                       : 0.0;
+    contrast[flat] = std::max(contrast[flat], float(contrast[flat] + (entry.second - sharp) * entry.first));
+  }
+  std::unordered_map<long, std::pair<float, float>>().swap(nearLumen);
+  std::vector<unsigned char>().swap(layer);
   for (const Ellipsoid& kidney : anatomy.kidneys)
   {
     ForEachVoxelNear(grid, kidney.centre - kidney.semiAxes - Point3::Constant(reach),

@@ -30,8 +30,13 @@
 /// disc of exactly r(s). The image is tissueHu plus, per structure, its contrast times
 /// Φ(−sd/blurSigmaMm) (sd: signed distance to its surface; Φ: normal CDF), i.e. the analytic
 /// blur of a locally flat edge by a Gaussian point-spread function, taking the brightest structure
-/// where they meet; then white Gaussian noise from std::mt19937(noiseSeed). The truth labels are
-/// the signs of sd at the voxel centres.
+/// where they meet — except that with a wall the vessel's own layers compose linearly, as a
+/// scanner blurs attenuation: wall, thrombus and lumen are nested solids, each adding its step
+/// over the layer around it times Φ (PhantomRaster.h), so the lumen's blurred edge meets the wall
+/// or thrombus that borders it and its tail reaches through a thin wall into the fat (issue 32);
+/// the neighbour pads, kidneys and bone are still the brightest where they meet. Then white
+/// Gaussian noise from std::mt19937(noiseSeed). The truth labels are the signs of sd at the voxel
+/// centres.
 ///
 /// Grid: any spacing and orthonormal direction (flips allowed); the extent holds the anatomy with
 /// a 10 mm margin unless `sizeVoxels` is given (then centred on the anatomy).

@@ -359,6 +359,25 @@ Anatomy BuildAnatomy(const PhantomParams& p)
     const Eigen::Vector2d c = wall->LumenCentre(seedH);
     truth.seedLps += c.x() * frame[0] + c.y() * frame[1];
   }
+  // The side branches' own walls (renal, mesenteric, coeliac arteries): a quarter of their radius,
+  // at most the aorta's wall. Every artery's lumen meets its wall, not the fat beyond it; without
+  // one a branch's edge is a lumen-to-fat step the lumen's half-maximum against its wall misses
+  // (issue 32).
+  if (wallMm > 0.0)
+  {
+    const std::size_t branches = anatomy.tubes.size();
+    for (std::size_t t = 0; t < branches; ++t)
+    {
+      const Tube& tube = anatomy.tubes[t];
+      if (tube.name == "aorta" || tube.name.find("Iliac") != std::string::npos)
+        continue; // the aorta's wall is AorticWall's, the iliacs' wallTubes above
+      const double thickness = std::min(wallMm, 0.25 * tube.maxRadius);
+      const auto radius = tube.radiusAt;
+      anatomy.wallTubes.push_back({ tube.name + "Wall", tube.axis,
+                                    [radius, thickness](double s) { return radius(s) + thickness; },
+                                    tube.maxRadius + thickness });
+    }
+  }
   return anatomy;
 }
 

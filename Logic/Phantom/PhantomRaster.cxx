@@ -72,40 +72,57 @@ void DrawAorticWall(const AorticWall& wall,
                     const Grid& grid,
                     double reach,
                     std::vector<float>& contrast,
-                    std::vector<unsigned char>& labels)
+                    std::vector<unsigned char>& labels,
+                    std::vector<unsigned char>& layer)
 {
   const double outward = wall.ReachMm() + reach;
   const auto [lo, hi] = wall.BoundsLps(reach);
   const double sigma = p.blurSigmaMm;
-  ForEachVoxelNear(grid, lo, hi,
-                   [&](long flat, const Point3& x)
-                   {
-                     const AorticWall::Coordinates c = wall.At(x);
-                     if (c.rho > outward || c.beyondMm > reach)
-                       return;
-                     const double ends = c.beyondMm; // past the aorta's top or below the bifurcation
-                     const double outer = std::max(wall.OuterSignedDistance(c), ends);
-                     const double shell = std::max(wall.WallSignedDistance(c), ends);
-                     float value = contrast[flat];
-                     unsigned char label = labels[flat];
-                     const auto take = [&](double hu, double sd, unsigned char l, bool inside)
-                     {
-                       value = std::max(value, float((hu - p.tissueHu) * EdgeProfile(sd, sigma)));
-                       if (inside && sd < 0.0)
-                         label = l;
-                     };
-                     // Lowest priority first: each later label overwrites.
-                     for (const WallNeighbour& n : wall.Neighbours())
-                       take(n.hu, std::max(wall.NeighbourSignedDistance(c, n), ends), n.label, true);
-                     if (wall.HasThrombus())
-                       take(p.thrombusHu, outer, ThrombusLabel, true);
-                     take(p.wallHu, shell, WallLabel, true);
-                     for (const WallCalcification& w : wall.Calcifications())
-                       take(p.calcificationHu, std::max(wall.CalcificationSignedDistance(c, w), ends), CalciumLabel,
-                            true);
-                     contrast[flat] = value;
-                     labels[flat] = label;
-                   });
+  ForEachVoxelNear(
+    grid, lo, hi,
+    [&](long flat, const Point3& x)
+    {
+      const AorticWall::Coordinates c = wall.At(x);
+      if (c.rho > outward || c.beyondMm > reach)
+        return;
+      const double ends = c.beyondMm; // past the aorta's top or below the bifurcation
+      const double outer = std::max(wall.OuterSignedDistance(c), ends);
+      const double shell = std::max(wall.WallSignedDistance(c), ends);
+      float value = contrast[flat];
+      unsigned char label = labels[flat];
+      const auto take = [&](double hu, double sd, unsigned char l, bool inside)
+      {
+        value = std::max(value, float((hu - p.tissueHu) * EdgeProfile(sd, sigma)));
+        if (inside && sd < 0.0)
+          label = l;
+      };
+      // Lowest priority first: each later label overwrites.
+      for (const WallNeighbour& n : wall.Neighbours())
+        take(n.hu, std::max(wall.NeighbourSignedDistance(c, n), ends), n.label, true);
+      // The wall and the thrombus inside it: nested solids, blurred linearly.
+      const double inner = std::max(c.rho - wall.InnerRadius(c.h, c.thetaDeg), ends);
+      double layered = (p.wallHu - p.tissueHu) * EdgeProfile(outer, sigma);
+      if (wall.HasThrombus())
+        layered += (p.thrombusHu - p.wallHu) * EdgeProfile(inner, sigma);
+      const bool padBrighter = value > float(layered);
+      value = std::max(value, float(layered));
+      if (wall.HasThrombus() && outer < 0.0)
+        label = ThrombusLabel;
+      if (shell < 0.0)
+        label = WallLabel;
+      if (outer < 0.0)
+        layer[flat] =
+          static_cast<unsigned char>(wall.HasThrombus() && inner < 0.0 ? UnderLumen::Thrombus : UnderLumen::Wall);
+      if (padBrighter)
+        layer[flat] = static_cast<unsigned char>(UnderLumen::Brighter);
+      const float beforeCalcium = value;
+      for (const WallCalcification& w : wall.Calcifications())
+        take(p.calcificationHu, std::max(wall.CalcificationSignedDistance(c, w), ends), CalciumLabel, true);
+      if (value > beforeCalcium)
+        layer[flat] = static_cast<unsigned char>(UnderLumen::Brighter);
+      contrast[flat] = value;
+      labels[flat] = label;
+    });
 }
 
 } // namespace sgp::phantom

@@ -39,15 +39,34 @@ Grid MakeGrid(const PhantomParams& p, const std::array<Point3, 2>& bounds);
 /// See PhantomRaster.cxx.
 double EllipsoidSignedDistance(const Ellipsoid& e, const Point3& x);
 
-/// The aorta's outer body (thrombus HU), wall, calcification and neighbour pads (AorticWall.h),
-/// each blurred like every other edge and the brightest taken where they meet. Labels by
-/// priority: calcium, wall, thrombus, neighbours (the lumens, drawn after, override them all).
+/// What lies under a lumen drawn over the wall (`layer`): nothing (tissue), the wall, or thrombus.
+enum class UnderLumen : unsigned char
+{
+  Tissue = 0,
+  Wall = 1,
+  Thrombus = 2,
+  /// A calcification or a neighbour pad brighter than the layers here: the lumen's blur meets it by
+  /// the brightest value, as before (a linear sum would bloom a plaque into the lumen, a CT effect
+  /// the lumen's window is not built for, and lift an enhancing vein past the lumen's edge level).
+  Brighter = 3
+};
+
+/// The aorta's wall and thrombus as nested solids blurred linearly, as a scanner's point-spread
+/// function blurs attenuation: (wall − tissue)·P(outer) + (thrombus − wall)·P(inner wall), P the
+/// edge profile — so the lumen drawn over them later (AorticPhantom.cxx) meets the wall or the
+/// thrombus, not the tissue beyond the wall, at its edge (issue 32: the lumen's half-maximum edge
+/// is half-way between the lumen and what borders it). Calcification and neighbour pads are
+/// blurred likewise and the brightest taken where they meet the wall. `layer[flat]` is set to the
+/// sharp class under a lumen (UnderLumen) inside the outer wall, or Brighter where a
+/// calcification or a neighbour pad is the brightest. Labels by priority: calcium,
+/// wall, thrombus, neighbours (the lumens, drawn after, override them all).
 void DrawAorticWall(const AorticWall& wall,
                     const PhantomParams& p,
                     const Grid& grid,
                     double reach,
                     std::vector<float>& contrast,
-                    std::vector<unsigned char>& labels);
+                    std::vector<unsigned char>& labels,
+                    std::vector<unsigned char>& layer);
 
 /// Calls f(flat, lps) for every voxel of the grid whose centre may lie within the LPS box.
 template<typename Function>

@@ -28,10 +28,12 @@ std::vector<double> EdgeLevels(const CtImage& ct,
                                long firstSlice,
                                const std::vector<double>& sliceLevelHu,
                                double medianHu,
-                               double tissueHu)
+                               double tissueHu,
+                               bool floorTissue)
 {
+  const auto border = [&](double t) { return floorTissue ? LumenBorderHu(t) : t; };
   const long nz = mask.size[2];
-  std::vector<double> edge(static_cast<std::size_t>(nz), 0.5 * (medianHu + tissueHu));
+  std::vector<double> edge(static_cast<std::size_t>(nz), 0.5 * (medianHu + border(tissueHu)));
   if (sliceLevelHu.empty())
     return edge;
   std::vector<long> slabOfK(static_cast<std::size_t>(nz));
@@ -51,7 +53,7 @@ std::vector<double> EdgeLevels(const CtImage& ct,
       continue;
     const auto t = tissue.find(slabOfK[static_cast<std::size_t>(k)]);
     edge[static_cast<std::size_t>(k)] =
-      0.5 * (sliceLevelHu[static_cast<std::size_t>(image)] + (t != tissue.end() ? t->second : tissueHu));
+      0.5 * (sliceLevelHu[static_cast<std::size_t>(image)] + border(t != tissue.end() ? t->second : tissueHu));
   }
   return edge;
 }

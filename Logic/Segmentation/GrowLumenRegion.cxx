@@ -172,9 +172,12 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
   CheckForDarkFlood(region, crop.hu, tissueDepth, stats, params, voxelMl, result);
 
   ReportProgress(progress, 0.7, "Refining the boundary");
-  result.edgeHu = 0.5 * (stats.medianHu + result.tissueHu);
+  result.edgeHu = 0.5 * (stats.medianHu + LumenBorderHu(result.tissueHu));
   const std::vector<double> edge = EdgeLevels(ct, region.lumen, crop.hu, tissueDepth, crop.box.first[2], sliceLevelHu,
                                               stats.medianHu, result.tissueHu);
+  // Step 7's level: against the tissue as sampled (EdgeLevels: narrow branches' own peaks).
+  const std::vector<double> branchEdge = EdgeLevels(ct, region.lumen, crop.hu, tissueDepth, crop.box.first[2],
+                                                    sliceLevelHu, stats.medianHu, result.tissueHu, false);
   RefineBoundary(region.lumen, crop.hu, refineSteps,
                  PhysicalBallOffsets({ spacing[0], spacing[1], spacing[2] }, params.refineDistanceMm), edge, result);
 
@@ -202,10 +205,10 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
     thin.maxRadiusMm = params.thinBranchRadiusMm;
     thin.minReachMm = params.thinBranchReachMm;
     thin.maxPieceMl = params.leakMinimumPieceMl;
-    const long firstSlice = crop.box.first[2], slices = static_cast<long>(edge.size());
+    const long firstSlice = crop.box.first[2], slices = static_cast<long>(branchEdge.size());
     const ThinBranchResult added = ContinueThinBranches(
       ct, *result.mask, crop.box,
-      [&](long k) { return edge[static_cast<std::size_t>(std::clamp(k - firstSlice, 0L, slices - 1))]; },
+      [&](long k) { return branchEdge[static_cast<std::size_t>(std::clamp(k - firstSlice, 0L, slices - 1))]; },
       [&](long k)
       {
         return sliceLevelHu.empty()

@@ -5,7 +5,9 @@
 /// segmentation: nothing outside Logic/Segmentation includes it. Units HU, mm; indices are the CT's.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -96,6 +98,21 @@ constexpr double lumenCoreBlockMm = 2.0;
 /// 150–250 HU inside the window of a low-contrast scan) is a core of its own and does not lower
 /// the aorta's level. The aorta (at least 16 mm across) keeps a core; the iliacs from 10 mm.
 constexpr double lumenCoreDepthMm = 5.0;
+
+/// The darkest level a lumen's edge is taken against, HU. A lumen is bounded by its own wall or by
+/// thrombus — soft tissue of 20–80 HU on a CT angiogram (vessel-wall.md §2) — never by the fat
+/// beyond the wall. The tissue sampled lumenCoreDepthMm outside the lumen is that fat where the
+/// wall is thin (1–2 mm), and a half-maximum taken against it sits outside the lumen's edge: the
+/// wall's blurred step from the lumen is what the edge is (issue 32: every lumen diameter 0.55–
+/// 1.0 mm large beside a 1.5 mm wall in fat). Darker samples are raised to this level; where the
+/// lumen lies in muscle or thrombus (40 HU and above) the samples are used as they are.
+constexpr double lumenBorderFloorHu = 40.0;
+
+/// The tissue level a lumen's edge is half-way to: the sampled tissue, raised to lumenBorderFloorHu.
+inline double LumenBorderHu(double tissueHu)
+{
+  return std::isfinite(tissueHu) ? std::max(tissueHu, lumenBorderFloorHu) : tissueHu;
+}
 
 /// Clamps to the range of a CT voxel.
 inline short ClampToShort(double value)
@@ -229,6 +246,10 @@ void CheckForDarkFlood(const CutRegion& region,
 /// bolus fading down the body keeps each level's half-maximum, and what lies around the lumen far
 /// from a level — a heart in view 70 mm above the renal arteries, a scan cut lower — does not move
 /// its edge.
+/// With `floorTissue` the tissue taken is raised to lumenBorderFloorHu (LumenBorderHu): the aorta's
+/// and the iliacs' edge. Without, the level against the tissue sampled: step 7's, for branches
+/// so narrow (renal arteries, 5–7 mm, on 2.5 mm slices) that the blur keeps their own peak well
+/// under the lumen's level and a higher edge breaks them.
 std::vector<double> EdgeLevels(const CtImage& ct,
                                const MaskGrid& mask,
                                const std::vector<short>& hu,
@@ -236,7 +257,8 @@ std::vector<double> EdgeLevels(const CtImage& ct,
                                long firstSlice,
                                const std::vector<double>& sliceLevelHu,
                                double medianHu,
-                               double tissueHu);
+                               double tissueHu,
+                               bool floorTissue = true);
 
 /// Steps 5 and 6: the boundary moved to the half-maximum edge level, `edge[k]` on crop slice k
 /// (EdgeLevels), then pits and holes filled.

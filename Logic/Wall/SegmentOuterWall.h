@@ -75,8 +75,16 @@ struct OuterWallParams
   double fatBelowHu = -30.0; ///< adipose tissue lies below (vessel-wall.md: −190 … −30 HU)
   /// The vessel layer's level is at least this (vessel-wall.md §2: wall 60–90 HU, thrombus 30–60):
   /// a 1.5 mm wall under a 0.5 mm blur reads 20 HU a millimetre beyond the lumen, which would put
-  /// the half-maximum 0.4 mm outside the wall.
+  /// the half-maximum 0.4 mm outside the wall. Once the lumen's tail is taken off (RemoveLumenTail)
+  /// a wall of 1–2 mm never shows its plateau, so this is the wall's level at the outer edge: each
+  /// 10 HU it lies below the real wall's moves the edge 0.07 mm outward (σ 1 mm, fat −100 HU).
   double layerHu = 60.0;
+  /// The lumen's edge is half-way between the lumen and this level (the lumen segmentation's
+  /// border floor, GrowLumenRegion.h): the mirror of the lumen's blurred step is centred there
+  /// (RemoveLumenTail in SegmentOuterWall.cxx). Between the lumen's and the layer's level halves,
+  /// the fat's tail inside a thin wall lowers the real edge's value by (wall − fat)·Φ(−w/σ),
+  /// 11 HU for 1.5 mm and σ 1 mm, and a mirror centred 0.1 mm too deep under-reads the tail.
+  double lumenBorderHu = 40.0;
   double minimumWallMm = 0.5;   ///< the boundary lies at least this far beyond the lumen's edge
   double fatSupportMm = 3.0;    ///< fat must follow the boundary within this
   double outlierMm = 1.0;       ///< candidates this far outside the fitted circle are not the wall

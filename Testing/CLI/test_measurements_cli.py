@@ -144,8 +144,9 @@ def check_run(label, returned, files, truth, expect_source, shift_mm):
         # 1 % / 0.01 for a ratio / 0.1 mL, with its unit.
         decimals = {"mm": 1, "deg": 1, "%": 0, "ratio": 2, "mL": 1}.get(row[2], 1)
         number = re.match(r"^(-?\d+(?:\.\d+)?)", row[12])
+        # Compared as numbers: -0.3 % reads "0 %" (a person is not shown "-0 %").
         check(len(row[11]) > 5 and " " in row[11] and number is not None
-              and number.group(1) == f"{float(row[1]):.{decimals}f}",
+              and float(number.group(1)) == float(f"{float(row[1]):.{decimals}f}"),
               f"{label}: table {name} is shown in words at clinical precision", f"{row[11]!r}: {row[12]!r}")
 
     profile = read_table(files["outputDiameterProfile"]) if os.path.isfile(files["outputDiameterProfile"]) else []

@@ -327,7 +327,9 @@ def check_case(args, workdir, profile, case, phantom_args, screenshot_out):
         line = data[row, data.shape[1] // 2, :].astype(float)
         centre = line.size // 2
         lumen = np.median(line[centre - 3:centre + 4])
-        outside = np.median(np.concatenate([line[:10], line[-10:]]))
+        # What borders the lumen: its wall or soft tissue, at least 40 HU (issue 32: half-way to the
+        # fat beyond a thin wall the edge lies 0.5 mm out on each side; GrowLumenRegion's floor).
+        outside = max(np.median(np.concatenate([line[:10], line[-10:]])), 40.0)
         half = 0.5 * (lumen + outside)
         inside = np.nonzero(line >= half)[0]
         # The run of pixels around the centre above half-maximum, edges interpolated linearly.

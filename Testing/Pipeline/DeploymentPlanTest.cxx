@@ -37,6 +37,18 @@ RepairPlan Plan(const AorticPhantom& phantom, const PlanParams& params = testing
   return PlanRepair(phantom.ct, phantom.truth.seedLps, PlanRequest{}, params);
 }
 
+/// The shipped parameters with the Endurant II forced. The wall phantom's 22.0 mm outer (a) lies
+/// 0.13 mm below the point where the recommendation turns from the Endurant II 25 mm (13.6 %
+/// oversizing) to the Excluder Conformable 26 mm (18.2 %) around the 15 % target, well within the
+/// outer wall's measurement error (+0.1 to +0.3 mm on this phantom): the tests of how a graft
+/// deploys and seals pin the family they were written for rather than follow that coin.
+PlanParams EndurantParams()
+{
+  PlanParams params = testing::ShippedPlanParams();
+  params.selection.forcedDevice = "Endurant II";
+  return params;
+}
+
 /// A wall in fat and 14 mm common iliacs (external iliacs wide enough for every family's access).
 PhantomParams WallPhantom()
 {
@@ -262,7 +274,7 @@ TEST_P(DeployedGraftPhantom, EdgeAtTheTargetLengthsAsCatalogued)
   p.spacingMm = { 0.8, 0.8, GetParam().sliceMm };
   p.neckThrombusThicknessMm = GetParam().neckThrombusMm;
   const AorticPhantom phantom = GenerateAorticPhantom(p);
-  const RepairPlan plan = Plan(phantom);
+  const RepairPlan plan = Plan(phantom, EndurantParams());
   ASSERT_NE(plan.Configuration(), nullptr) << plan.selection.summary;
   ASSERT_TRUE(plan.Configuration()->configured) << plan.Configuration()->unknownReason;
   ExpectDeployedAsPlanned(plan);
@@ -308,7 +320,7 @@ TEST(Deployment, NeckThrombusNineMillimetresBelowTheSite_SealNineMillimetresType
   const AorticPhantom phantom = GenerateAorticPhantom(NeckThrombusNineMillimetresBelowTheSite(true));
   // The phantom is what the issue describes (its truth, computed on the analytic thrombus).
   ASSERT_NEAR(phantom.truth.sizing.neckThrombusBelowSite, 9.0, 0.2);
-  const RepairPlan plan = Plan(phantom);
+  const RepairPlan plan = Plan(phantom, EndurantParams());
   ASSERT_TRUE(plan.HasGraft());
   PrintSeal(plan, phantom.truth.sizing.healthyNeckLength, "healthy neck (truth)");
   const double spacing = StentMeshParams{}.ringSpacingMm;
@@ -317,7 +329,9 @@ TEST(Deployment, NeckThrombusNineMillimetresBelowTheSite_SealNineMillimetresType
   // And within half a spacing (plus the site's 1 mm) of the healthy neck the truth gives: the seal
   // counts only healthy wall, not the thrombus-lined neck below.
   EXPECT_NEAR(plan.fitCheck.proximalSealLengthMm, phantom.truth.sizing.healthyNeckLength, 0.5 * spacing + 1.0);
-  EXPECT_LT(plan.fitCheck.proximalSealLengthMm, 10.0);
+  // Below the 10 mm minimum, or within the seal's uncertainty above it, where the risk is flagged
+  // as one that cannot be excluded (FitCheckParams::sealUncertaintyMm).
+  EXPECT_LT(plan.fitCheck.proximalSealLengthMm, 10.0 + FitCheckParams{}.sealUncertaintyMm);
   EXPECT_TRUE(plan.fitCheck.migrationRisk);
   EXPECT_TRUE(std::any_of(plan.fitCheck.findings.begin(), plan.fitCheck.findings.end(),
                           [](const std::string& f) {
@@ -336,7 +350,7 @@ TEST(Deployment, NeckThrombusNineMillimetresBelowTheSite_SealNineMillimetresType
 TEST(Deployment, SameNeckWithoutThrombus_SealIsTheNeckLength)
 {
   const AorticPhantom phantom = GenerateAorticPhantom(NeckThrombusNineMillimetresBelowTheSite(false));
-  const RepairPlan plan = Plan(phantom);
+  const RepairPlan plan = Plan(phantom, EndurantParams());
   ASSERT_TRUE(plan.HasGraft());
   PrintSeal(plan, phantom.truth.sizing.proximalNeckLength, "neck length (truth)");
   // 2 mm: the issue's bar (the neck's end is where the outer wall widens past 110 % of (a), which
