@@ -21,41 +21,50 @@
 namespace sgp::lumen_growth
 {
 
-std::vector<double> EdgeLevels(const CtImage& ct,
-                               const MaskGrid& mask,
-                               const std::vector<short>& hu,
-                               const std::array<long, 3>& depth,
-                               long firstSlice,
-                               const std::vector<double>& sliceLevelHu,
-                               double medianHu,
-                               double tissueHu,
-                               bool floorTissue)
+EdgeLevels MeasureEdgeLevels(const CtImage& ct,
+                             const MaskGrid& mask,
+                             const std::vector<short>& hu,
+                             const std::array<long, 3>& depth,
+                             long firstSlice,
+                             const std::vector<double>& sliceLevelHu,
+                             double medianHu,
+                             double tissueHu)
 {
-  const auto border = [&](double t) { return floorTissue ? LumenBorderHu(t) : t; };
   const long nz = mask.size[2];
-  std::vector<double> edge(static_cast<std::size_t>(nz), 0.5 * (medianHu + border(tissueHu)));
-  if (sliceLevelHu.empty())
-    return edge;
-  std::vector<long> slabOfK(static_cast<std::size_t>(nz));
-  for (long k = 0; k < nz; ++k)
-    slabOfK[static_cast<std::size_t>(k)] = SlabOfSlice(ct, firstSlice + k);
-  std::map<long, std::vector<double>> samples; // by slab
-  ForEachTissueSample(mask, hu, depth,
-                      [&](long k, short v) { samples[slabOfK[static_cast<std::size_t>(k)]].push_back(v); });
-  std::map<long, double> tissue;
-  for (auto& [slab, values] : samples)
-    if (static_cast<long>(values.size()) >= minimumSlabVoxels)
-      tissue[slab] = Median(values);
-  for (long k = 0; k < nz; ++k)
+  // Each slice's lumen level and tissue; the levels are half-way between them.
+  std::vector<double> lumen(static_cast<std::size_t>(nz), medianHu), tissueOf(static_cast<std::size_t>(nz), tissueHu);
+  if (!sliceLevelHu.empty())
   {
-    const long image = firstSlice + k;
-    if (image < 0 || image >= static_cast<long>(sliceLevelHu.size()))
-      continue;
-    const auto t = tissue.find(slabOfK[static_cast<std::size_t>(k)]);
-    edge[static_cast<std::size_t>(k)] =
-      0.5 * (sliceLevelHu[static_cast<std::size_t>(image)] + border(t != tissue.end() ? t->second : tissueHu));
+    std::vector<long> slabOfK(static_cast<std::size_t>(nz));
+    for (long k = 0; k < nz; ++k)
+      slabOfK[static_cast<std::size_t>(k)] = SlabOfSlice(ct, firstSlice + k);
+    std::map<long, std::vector<double>> samples; // by slab
+    ForEachTissueSample(mask, hu, depth,
+                        [&](long k, short v) { samples[slabOfK[static_cast<std::size_t>(k)]].push_back(v); });
+    std::map<long, double> tissue;
+    for (auto& [slab, values] : samples)
+      if (static_cast<long>(values.size()) >= minimumSlabVoxels)
+        tissue[slab] = Median(values);
+    for (long k = 0; k < nz; ++k)
+    {
+      const long image = firstSlice + k;
+      if (image < 0 || image >= static_cast<long>(sliceLevelHu.size()))
+        continue;
+      const auto t = tissue.find(slabOfK[static_cast<std::size_t>(k)]);
+      lumen[static_cast<std::size_t>(k)] = sliceLevelHu[static_cast<std::size_t>(image)];
+      if (t != tissue.end())
+        tissueOf[static_cast<std::size_t>(k)] = t->second;
+    }
   }
-  return edge;
+  EdgeLevels levels;
+  levels.lumenEdge.resize(static_cast<std::size_t>(nz));
+  levels.branchEdge.resize(static_cast<std::size_t>(nz));
+  for (std::size_t k = 0; k < static_cast<std::size_t>(nz); ++k)
+  {
+    levels.lumenEdge[k] = 0.5 * (lumen[k] + LumenBorderHu(tissueOf[k]));
+    levels.branchEdge[k] = 0.5 * (lumen[k] + tissueOf[k]);
+  }
+  return levels;
 }
 
 void RefineBoundary(MaskGrid& lumen,

@@ -173,11 +173,10 @@ LumenSegmentation GrowLumenRegion(const CtImage& ct,
 
   ReportProgress(progress, 0.7, "Refining the boundary");
   result.edgeHu = 0.5 * (stats.medianHu + LumenBorderHu(result.tissueHu));
-  const std::vector<double> edge = EdgeLevels(ct, region.lumen, crop.hu, tissueDepth, crop.box.first[2], sliceLevelHu,
+  const EdgeLevels levels = MeasureEdgeLevels(ct, region.lumen, crop.hu, tissueDepth, crop.box.first[2], sliceLevelHu,
                                               stats.medianHu, result.tissueHu);
-  // Step 7's level: against the tissue as sampled (EdgeLevels: narrow branches' own peaks).
-  const std::vector<double> branchEdge = EdgeLevels(ct, region.lumen, crop.hu, tissueDepth, crop.box.first[2],
-                                                    sliceLevelHu, stats.medianHu, result.tissueHu, false);
+  const std::vector<double>& edge = levels.lumenEdge;
+  const std::vector<double>& branchEdge = levels.branchEdge; // step 7's (EdgeLevels)
   RefineBoundary(region.lumen, crop.hu, refineSteps,
                  PhysicalBallOffsets({ spacing[0], spacing[1], spacing[2] }, params.refineDistanceMm), edge, result);
 

@@ -238,30 +238,37 @@ void CheckForDarkFlood(const CutRegion& region,
                        LumenSegmentation& result);
 
 // BoundaryRefinement.cxx
-/// Step 5's edge level on each slice of the crop (`firstSlice` its first CT slice): half-way
-/// between the lumen and the tissue around it. Without step 1b's levels (`sliceLevelHu` empty) one
-/// level, the seed's median and the tissue median around the whole region. With them each slice's
-/// own: its slab's lumen level, and the tissue median of its slab's samples (MeasureTissueHu's
-/// samples on that slab's slices, when at least minimumSlabVoxels), else the whole region's; so a
-/// bolus fading down the body keeps each level's half-maximum, and what lies around the lumen far
-/// from a level — a heart in view 70 mm above the renal arteries, a scan cut lower — does not move
-/// its edge.
-/// With `floorTissue` the tissue taken is raised to lumenBorderFloorHu (LumenBorderHu): the aorta's
-/// and the iliacs' edge. Without, the level against the tissue sampled: step 7's, for branches
-/// so narrow (renal arteries, 5–7 mm, on 2.5 mm slices) that the blur keeps their own peak well
-/// under the lumen's level and a higher edge breaks them.
-std::vector<double> EdgeLevels(const CtImage& ct,
-                               const MaskGrid& mask,
-                               const std::vector<short>& hu,
-                               const std::array<long, 3>& depth,
-                               long firstSlice,
-                               const std::vector<double>& sliceLevelHu,
-                               double medianHu,
-                               double tissueHu,
-                               bool floorTissue = true);
+/// Step 5's levels on each crop slice, HU: half-way between the slice's lumen level and the tissue
+/// around it.
+struct EdgeLevels
+{
+  /// With the tissue raised to lumenBorderFloorHu (LumenBorderHu): the aorta's and the iliacs'
+  /// edge, the boundary refinement's.
+  std::vector<double> lumenEdge;
+  /// With the tissue as sampled: step 7's, for branches so narrow (renal arteries, 5–7 mm, on
+  /// 2.5 mm slices) that the blur keeps their own peak well under the lumen's level and a higher
+  /// edge breaks them.
+  std::vector<double> branchEdge;
+};
+
+/// Both levels from one pass over the samples (crop slices; `firstSlice` its first CT slice).
+/// Without step 1b's levels (`sliceLevelHu` empty) one level, the seed's median and the tissue
+/// median around the whole region. With them each slice's own: its slab's lumen level, and the
+/// tissue median of its slab's samples (MeasureTissueHu's samples on that slab's slices, when at
+/// least minimumSlabVoxels), else the whole region's; so a bolus fading down the body keeps each
+/// level's half-maximum, and what lies around the lumen far from a level — a heart in view 70 mm
+/// above the renal arteries, a scan cut lower — does not move its edge.
+EdgeLevels MeasureEdgeLevels(const CtImage& ct,
+                             const MaskGrid& mask,
+                             const std::vector<short>& hu,
+                             const std::array<long, 3>& depth,
+                             long firstSlice,
+                             const std::vector<double>& sliceLevelHu,
+                             double medianHu,
+                             double tissueHu);
 
 /// Steps 5 and 6: the boundary moved to the half-maximum edge level, `edge[k]` on crop slice k
-/// (EdgeLevels), then pits and holes filled.
+/// (EdgeLevels::lumenEdge), then pits and holes filled.
 void RefineBoundary(MaskGrid& lumen,
                     const std::vector<short>& hu,
                     int refineSteps,
