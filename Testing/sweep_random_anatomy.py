@@ -193,13 +193,14 @@ def read_params(path):
     return values
 
 
-def shoulder_allowance(truth, level_name, below_mm):
+def shoulder_allowance(truth, level_name, below_mm, outer=False):
     """Largest change of the truth aorta's diameter within +-1 mm of the level `below_mm` along
-    the axis below the landmark `level_name` (0 where the aorta's diameter is constant). The
-    truth's radii are the lumen's; the outer wall's shoulder (wall and thrombus on the lumen's) is
-    given the lumen's slope, as the neck below the site has no thrombus in these draws."""
+    the axis below the landmark `level_name` (0 where the aorta's diameter is constant): the
+    lumen's, or with `outer` the outer wall's (the truth's outerRadiusMm; a level in the sac's
+    shoulder under concentric thrombus has an outer slope far steeper than the lumen's)."""
     aorta = next(v for v in truth["vessels"] if v["name"] == "aorta")
-    points, radii = np.array(aorta["points"], float), np.array(aorta["radiusMm"], float)
+    key = "outerRadiusMm" if outer and "outerRadiusMm" in aorta else "radiusMm"
+    points, radii = np.array(aorta["points"], float), np.array(aorta[key], float)
     abscissa = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(points, axis=0), axis=1))])
     site = np.array(truth["landmarks"][level_name], float)
     s0 = abscissa[int(np.argmin(np.linalg.norm(points - site, axis=1)))] + below_mm
@@ -220,10 +221,11 @@ def judge(truth, values, slice_mm, outer, bend_excused=False):
     if outer:
         checks += [(name, truth_name, 1.5 if thin else 2.0) for name, truth_name in OUTER_VALUES.items()]
     for name, truth_name, tolerance in checks:
+        wall = name in OUTER_VALUES
         if name in ("proximalNeckLumenDiameter", "proximalNeckDiameter"):
-            tolerance += shoulder_allowance(truth, "proximalImplantationSite", 0.0)
+            tolerance += shoulder_allowance(truth, "proximalImplantationSite", 0.0, wall)
         elif name in ("neckLumenDiameter15mm", "neckDiameter15mm"):
-            tolerance += shoulder_allowance(truth, "proximalImplantationSite", 15.0)
+            tolerance += shoulder_allowance(truth, "proximalImplantationSite", 15.0, wall)
         measured = float(values.get(name, "-1"))
         expected = float(truth["sizing"][truth_name])
         if bend_excused and name in ("neckLumenDiameter15mm", "neckDiameter15mm") and \

@@ -92,6 +92,12 @@ void WritePhantomTruth(const AorticPhantom& phantom, const std::string& path)
     {
       json << (i ? ", " : "") << Number(vessel.radiusMm[i]);
     }
+    if (vessel.outerRadiusMm.size() > 0)
+    {
+      json << "], \"outerRadiusMm\": [";
+      for (Eigen::Index i = 0; i < vessel.outerRadiusMm.size(); ++i)
+        json << (i ? ", " : "") << Number(vessel.outerRadiusMm[i]);
+    }
     json << "]}" << (v + 1 < truth.vessels.size() ? "," : "") << "\n";
   }
   json << "  ],\n  \"labels\": {\"0\": \"tissue\", \"1\": \"lumen\", \"2\": \"bone\", \"3\": \"kidney\", \"4\": "

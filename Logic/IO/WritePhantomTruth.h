@@ -7,6 +7,8 @@
 ///    "sizing": {"proximalNeckDiameter": …, … (the names of DESIGN.md's contract)},
 ///    "landmarks": {"aorticBifurcation": [x,y,z], …},
 ///    "vessels": [{"name": "aorta", "points": [[x,y,z], …], "radiusMm": […]}, …],
+///    (the aorta of a phantom with a wall also has "outerRadiusMm": the outer wall's round
+///    profile at each point, for the outer diameters' truth along the axis),
 ///    "labels": {"0": "tissue", "1": "lumen", "2": "bone", "3": "kidney"} }`.
 /// "direction" lists the three axis directions one after another, as the CLI's directionLps.
 ///

@@ -223,11 +223,7 @@ void MeasureLengths(const MeasureContext& c, double sNeckEnd, double iliacOffset
 }
 
 /// β (neck against aneurysm axis), α (suprarenal against neck axis) and the neck's conicity.
-void MeasureNeckAngles(const MeasureContext& c,
-                       double sNeckEnd,
-                       const RingDiameters& a,
-                       const RingDiameters& b,
-                       Measurements& out)
+void MeasureNeckAngles(const MeasureContext& c, double sNeckEnd, const RingDiameters& a, Measurements& out)
 {
   const Centerline& aorta = c.tree.aorta;
   const double sSite = c.sSite;
@@ -260,7 +256,8 @@ void MeasureNeckAngles(const MeasureContext& c,
   const double aOuter = out.Value("proximalNeckDiameter"), bOuter = out.Value("neckDiameter15mm");
   const bool outer = std::isfinite(aOuter) && std::isfinite(bOuter);
   Measurement conicity{ "neckConicity",
-                        outer ? 100.0 * (bOuter - aOuter) / aOuter : 100.0 * (b.meanMm - a.meanMm) / a.meanMm,
+                        outer ? 100.0 * (bOuter - aOuter) / aOuter
+                              : 100.0 * (out.Value("neckLumenDiameter15mm") - a.meanMm) / a.meanMm,
                         "%",
                         "(b − a) / a over the first 15 mm of the neck; positive: the neck widens downward (reverse "
                         "taper)",
@@ -346,6 +343,13 @@ void LeaveOutWhatTheScanDoesNotHold(const MeasureContext& c, Measurements& out)
   }
 }
 
+/// How much a tilt of (b)'s plane by SectionTiltDeg changes the lumen's diameter there, mm.
+double BTiltChangeMm(const MeasureContext& c, const LabelImage& lumen)
+{
+  const double s = c.sSite + secondDiameterDepthMm;
+  return TiltSensitivityMm(lumen, PositionAt(c.tree.aorta, s), TangentAt(c.tree.aorta, s), SectionTiltDeg);
+}
+
 /// (b) where no plane is the vessel's cross-section (SectionTilt.h): the lumen's mean diameter in
 /// the plane ⊥ the aorta at (b)'s level changes by more than SectionTiltMaxMm when the plane is
 /// tilted by SectionTiltDeg — a bend that is also the sac's shoulder, below a short angled neck.
@@ -356,9 +360,7 @@ void LeaveOutBOnABend(const MeasureContext& c, const LabelImage* lumen, Measurem
   const double b = out.Value("neckLumenDiameter15mm");
   if (!lumen || !c.site.Known() || !(b > 0.0))
     return;
-  const double s = c.sSite + secondDiameterDepthMm;
-  const double change =
-    TiltSensitivityMm(*lumen, PositionAt(c.tree.aorta, s), TangentAt(c.tree.aorta, s), SectionTiltDeg);
+  const double change = BTiltChangeMm(c, *lumen);
   if (!(change > SectionTiltMaxMm))
     return;
   const std::string list = LeaveOut({ "neckLumenDiameter15mm", "neckDiameter15mm", "neckConicity" }, out);
@@ -368,6 +370,49 @@ void LeaveOutBOnABend(const MeasureContext& c, const LabelImage* lumen, Measurem
                          " degrees (a bend on the sac's shoulder below a short "
                          "angled neck), so no plane there is the vessel's cross-section; " +
                          list + " are left out.");
+}
+
+/// (b) in the lumen's narrowest plane (SectionTilt.h FindNarrowestSection): below a short
+/// angled neck the smoothed centerline's direction at (b) runs up to 16° off the vessel's axis
+/// (issue 32's sweep), and the ring's plane ⊥ it cuts the lumen obliquely, wide. Where the
+/// narrowest plane through the ring's centre, within ObliqueSearchDeg, is narrower than the ring's
+/// own plane by more than ObliqueExcessMm, the lumen and outer (b) (mean, extremes, area) and the
+/// reverse taper over 15 mm are scaled by the ratio of the two planes' mean diameters — an oblique
+/// cut of a tube widens every concentric contour by the same factor — with a warning. Not where
+/// (b) is left out on a bend (LeaveOutBOnABend, later).
+void ReadBInTheNarrowestPlane(const MeasureContext& c, const LabelImage* lumen, Measurements& out)
+{
+  Measurement* lumenB = nullptr;
+  for (Measurement& m : out.values)
+    if (m.name == "neckLumenDiameter15mm")
+      lumenB = &m;
+  if (!lumen || !c.site.Known() || !lumenB || !(lumenB->value > 0.0) || BTiltChangeMm(c, *lumen) > SectionTiltMaxMm)
+    return;
+  const double s = c.sSite + secondDiameterDepthMm;
+  const NarrowestSection section =
+    FindNarrowestSection(*lumen, c.trunk.At(s).centre, TangentAt(c.tree.aorta, s), ObliqueSearchDeg);
+  if (!(section.givenPlaneMeanMm - section.meanMm > ObliqueExcessMm))
+    return;
+  const double ratio = section.meanMm / section.givenPlaneMeanMm;
+  const double aOuter = out.Value("proximalNeckDiameter");
+  for (Measurement& m : out.values)
+    if (m.name == "neckLumenDiameter15mm" || m.name == "neckDiameter15mm")
+    {
+      m.value *= ratio;
+      m.minMm *= ratio;
+      m.maxMm *= ratio;
+      m.areaMm *= ratio;
+      m.definition += ", scaled to the lumen's narrowest plane through the ring's centre";
+    }
+  if (std::isfinite(out.reverseTaperMm[1]) && std::isfinite(aOuter))
+    out.reverseTaperMm[1] = (out.reverseTaperMm[1] + aOuter) * ratio - aOuter;
+  out.warnings.push_back("(b) is read in the lumen's narrowest plane: 15 mm below the proximal site the plane "
+                         "perpendicular to the centerline cuts the lumen " +
+                         FormatNumber(section.givenPlaneMeanMm - section.meanMm, 1) + " mm wider than a plane tilted " +
+                         FormatNumber(section.tiltDeg, 1) +
+                         " degrees from it (the centerline's direction on the bend below an angled neck), so (b)'s "
+                         "diameters are scaled by " +
+                         FormatNumber(ratio, 3) + ".");
 }
 
 /// The site not known (ProximalSiteSource::None): every value measured from it is NaN — the neck's
@@ -436,7 +481,7 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
     if (std::isfinite(c.internalIliacAbscissa[side]))
       out.internalIliacOriginLps[side] = PositionAt(*c.iliac[side], c.internalIliacAbscissa[side]);
 
-  const auto [a, b] = MeasureNeckDiameters(c, out);
+  const RingDiameters a = MeasureNeckDiameters(c, out).first;
   const std::size_t widest = MeasureSacDiameters(c, out);
   for (int side = 0; side < 2; ++side)
     MeasureIliacLandingZone(c, side, out);
@@ -454,6 +499,7 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
   else
     out.warnings.push_back("The outer wall was not traced: the outer-wall diameters (a)-(f) and the thrombus values "
                            "are not measured.");
+  ReadBInTheNarrowestPlane(c, lumen, out);
   // The neck's end on the outer wall where it was found (the IFU's and the truth's definition),
   // else on the lumen's rings.
   const double sLumenNeckEnd = FindNeckEnd(c, a, widest, out);
@@ -465,7 +511,7 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
     out.iliacStartBeyondBifurcationMm[side] = iliacOffset[side];
     out.internalIliacAbscissaMm[side] = c.internalIliacAbscissa[side];
   }
-  MeasureNeckAngles(c, sNeckEnd, a, b, out);
+  MeasureNeckAngles(c, sNeckEnd, a, out);
   MeasureIliacAccess(c, iliacOffset, out);
   LeaveOutWhatTheScanDoesNotHold(c, out);
   LeaveOutWhatNeedsTheSite(c, out);

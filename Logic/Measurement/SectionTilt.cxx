@@ -5,6 +5,8 @@
 
 #include <Eigen/Geometry>
 
+#include "Common/PlaneDiameters.h"
+
 namespace sgp
 {
 namespace
@@ -12,13 +14,6 @@ namespace
 
 constexpr double pi = 3.14159265358979323846;
 constexpr double stepMm = 0.1, farthestMm = 100.0;
-
-/// A unit vector ⊥ `n`.
-Eigen::Vector3d Perpendicular(const Eigen::Vector3d& n)
-{
-  const Eigen::Vector3d other = std::abs(n.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
-  return n.cross(other).normalized();
-}
 
 /// Whether the voxel holding `lps` is lumen (outside the image: not).
 bool InLumen(const LabelImage& lumen, const Point3& lps)
@@ -39,6 +34,81 @@ double BoundaryDistance(const LabelImage& lumen, const Point3& centre, const Eig
   return r;
 }
 
+/// The lumen mask interpolated trilinearly at an LPS point (0 outside the image).
+class SmoothMask
+{
+public:
+  explicit SmoothMask(const LabelImage& lumen)
+    : m_Lumen(lumen)
+  {
+    const auto& d = lumen.GetDirection();
+    const auto& sp = lumen.GetSpacing();
+    const auto& o = lumen.GetOrigin();
+    Eigen::Matrix3d m;
+    for (unsigned r = 0; r < 3; ++r)
+    {
+      for (unsigned c = 0; c < 3; ++c)
+        m(r, c) = d[r][c] * sp[c];
+      m_Origin[r] = o[r];
+    }
+    m_ToIndex = m.inverse();
+    const auto size = lumen.GetLargestPossibleRegion().GetSize();
+    for (unsigned a = 0; a < 3; ++a)
+      m_Size[a] = static_cast<long>(size[a]);
+  }
+
+  double operator()(const Point3& lps) const
+  {
+    const Eigen::Vector3d f = m_ToIndex * (lps - m_Origin);
+    const long i0 = static_cast<long>(std::floor(f.x())), j0 = static_cast<long>(std::floor(f.y())),
+               k0 = static_cast<long>(std::floor(f.z()));
+    const double wx = f.x() - double(i0), wy = f.y() - double(j0), wz = f.z() - double(k0);
+    double value = 0.0;
+    for (int dk = 0; dk < 2; ++dk)
+      for (int dj = 0; dj < 2; ++dj)
+        for (int di = 0; di < 2; ++di)
+        {
+          const long i = i0 + di, j = j0 + dj, k = k0 + dk;
+          if (i < 0 || j < 0 || k < 0 || i >= m_Size[0] || j >= m_Size[1] || k >= m_Size[2])
+            continue;
+          LabelImage::IndexType index{ { i, j, k } };
+          if (m_Lumen.GetPixel(index) == 0)
+            continue;
+          value += (di ? wx : 1.0 - wx) * (dj ? wy : 1.0 - wy) * (dk ? wz : 1.0 - wz);
+        }
+    return value;
+  }
+
+private:
+  const LabelImage& m_Lumen;
+  Eigen::Matrix3d m_ToIndex;
+  Eigen::Vector3d m_Origin;
+  long m_Size[3] = { 0, 0, 0 };
+};
+
+/// Distance from `centre` along unit `e` to where the smooth mask first falls below 0.5.
+double SmoothBoundaryDistance(const SmoothMask& mask, const Point3& centre, const Eigen::Vector3d& e)
+{
+  double in = 0.0, out = 0.5;
+  while (out < farthestMm && mask(centre + out * e) >= 0.5)
+  {
+    in = out;
+    out += 0.5;
+  }
+  while (out - in > 0.01)
+  {
+    const double mid = 0.5 * (in + out);
+    (mask(centre + mid * e) >= 0.5 ? in : out) = mid;
+  }
+  return 0.5 * (in + out);
+}
+
+double SmoothMeanDiameterMm(const SmoothMask& mask, const Point3& centre, const Eigen::Vector3d& normal, int count)
+{
+  return MeanDiameterInPlane(normal, count,
+                             [&](const Eigen::Vector3d& e) { return SmoothBoundaryDistance(mask, centre, e); });
+}
+
 } // namespace
 
 double LumenMeanDiameterMm(const LabelImage& lumen,
@@ -46,20 +116,13 @@ double LumenMeanDiameterMm(const LabelImage& lumen,
                            const Eigen::Vector3d& normal,
                            int diameterCount)
 {
-  const Eigen::Vector3d n = normal.normalized(), u = Perpendicular(n), v = n.cross(u);
-  double sum = 0.0;
-  for (int k = 0; k < diameterCount; ++k)
-  {
-    const double angle = pi * k / diameterCount;
-    const Eigen::Vector3d e = std::cos(angle) * u + std::sin(angle) * v;
-    sum += BoundaryDistance(lumen, centre, e) + BoundaryDistance(lumen, centre, -e);
-  }
-  return sum / diameterCount;
+  return MeanDiameterInPlane(normal, diameterCount,
+                             [&](const Eigen::Vector3d& e) { return BoundaryDistance(lumen, centre, e); });
 }
 
 double TiltSensitivityMm(const LabelImage& lumen, const Point3& centre, const Eigen::Vector3d& normal, double tiltDeg)
 {
-  const Eigen::Vector3d n = normal.normalized(), u = Perpendicular(n), v = n.cross(u);
+  const Eigen::Vector3d n = normal.normalized(), u = PerpendicularTo(n), v = n.cross(u);
   const double here = LumenMeanDiameterMm(lumen, centre, n);
   double largest = 0.0;
   for (const Eigen::Vector3d& axis : { u, v })
@@ -69,6 +132,50 @@ double TiltSensitivityMm(const LabelImage& lumen, const Point3& centre, const Ei
       largest = std::max(largest, std::abs(LumenMeanDiameterMm(lumen, centre, tilted) - here));
     }
   return largest;
+}
+
+NarrowestSection FindNarrowestSection(const LabelImage& lumen,
+                                      const Point3& centre,
+                                      const Eigen::Vector3d& normal,
+                                      double maxTiltDeg,
+                                      int diameterCount)
+{
+  const SmoothMask mask(lumen);
+  const Eigen::Vector3d n = normal.normalized(), u = PerpendicularTo(n), v = n.cross(u);
+  // The normal tilted by `tiltDeg` toward the in-plane direction at `azimuthDeg`.
+  const auto tilted = [&](double tiltDeg, double azimuthDeg)
+  {
+    const double a = azimuthDeg * pi / 180.0;
+    const Eigen::Vector3d toward = std::cos(a) * u + std::sin(a) * v;
+    return Eigen::Vector3d(Eigen::AngleAxisd(tiltDeg * pi / 180.0, n.cross(toward)) * n);
+  };
+  NarrowestSection best;
+  best.normal = n;
+  best.givenPlaneMeanMm = best.meanMm = SmoothMeanDiameterMm(mask, centre, n, diameterCount);
+  double bestAzimuth = 0.0;
+  const auto consider = [&](double tiltDeg, double azimuthDeg)
+  {
+    if (tiltDeg < 0.0 || tiltDeg > maxTiltDeg + 1e-9)
+      return;
+    const Eigen::Vector3d candidate = tilted(tiltDeg, azimuthDeg);
+    const double mean = SmoothMeanDiameterMm(mask, centre, candidate, diameterCount);
+    if (mean < best.meanMm)
+    {
+      best.meanMm = mean;
+      best.normal = candidate;
+      best.tiltDeg = tiltDeg;
+      bestAzimuth = azimuthDeg;
+    }
+  };
+  for (double tilt = 3.0; tilt <= maxTiltDeg + 1e-9; tilt += 3.0)
+    for (double azimuth = 0.0; azimuth < 360.0; azimuth += 20.0)
+      consider(tilt, azimuth);
+  const double tilt0 = best.tiltDeg, azimuth0 = bestAzimuth;
+  if (tilt0 > 0.0)
+    for (double dt = -1.5; dt <= 1.5 + 1e-9; dt += 0.5)
+      for (double da = -10.0; da <= 10.0 + 1e-9; da += 2.5)
+        consider(tilt0 + dt, azimuth0 + da);
+  return best;
 }
 
 } // namespace sgp

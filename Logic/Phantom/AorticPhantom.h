@@ -182,6 +182,7 @@ struct PhantomVessel
   Points axis;
   Eigen::VectorXd radiusMm;
   Eigen::VectorXd inscribedRadiusMm;
+  Eigen::VectorXd outerRadiusMm; ///< the aorta with a wall: the outer wall's round profile there; else empty
 };
 
 struct PhantomLandmark

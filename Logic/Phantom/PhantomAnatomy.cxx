@@ -11,6 +11,8 @@
 
 #include "Common/Errors.h"
 #include "Common/Format.h"
+#include "Phantom/KinkSection.h"
+#include "Phantom/PhantomRaster.h"
 
 namespace sgp::phantom
 {
@@ -110,6 +112,47 @@ void AddRenal(Anatomy& anatomy,
     return;
   }
   anatomy.tubes.push_back(StraightTube(name, { origin, hilum }, radius));
+}
+
+/// (b) near the neck's bend (KinkSection.h): where the bend's other straight piece reaches the
+/// plane at level h, the lumen's and the outer (b) are the smallest mean diameters of the phantom's
+/// own solids through the level's centres (the lumen's: off the axis where a thrombus moves it),
+/// over planes between the two pieces' normals. Elsewhere the nominal values stay.
+template<class RadiusAtZ, class OnAxis>
+void NeckBendSectionTruth(const Anatomy& anatomy,
+                          const PhantomParams& p,
+                          const RadiusAtZ& radiusAtZ,
+                          double sacTop,
+                          double h,
+                          const OnAxis& onAxis,
+                          const Eigen::Vector3d& neckDirection,
+                          PhantomSizing& sizing)
+{
+  const double beta = p.neckAngleDeg * pi / 180.0;
+  // Along the neck piece (h above the sac's top) the sac piece reaches the plane, and vice versa.
+  const double reach = h >= sacTop ? KinkReachMm([&](double u) { return radiusAtZ(sacTop - u); }, beta)
+                                   : KinkReachMm([&](double u) { return radiusAtZ(sacTop + u); }, beta);
+  if (!(std::abs(h - sacTop) < reach))
+    return;
+  const Eigen::Vector3d neck = -neckDirection, sac(0.0, 0.0, -1.0); // downward along the aorta
+  const AorticWall* wall = anatomy.wall.get();
+  TubeDistance lumenTube(anatomy.tubes.front());
+  const auto inLumen = [&](const Point3& x) { return lumenTube.SignedDistance(x) < 0.0; };
+  Point3 lumenCentre = onAxis(h);
+  if (wall)
+  {
+    const auto frame = wall->Frame(h);
+    const Eigen::Vector2d c = wall->LumenCentre(h);
+    lumenCentre += c.x() * frame[0] + c.y() * frame[1];
+  }
+  sizing.neckDiameter15mm = SmallestSectionMeanDiameterMm(inLumen, lumenCentre, neck, sac);
+  if (wall)
+  {
+    const auto inOuter = [&](const Point3& x) { return wall->OuterSignedDistance(wall->At(x)) < 0.0; };
+    sizing.outerNeckDiameter15mm = SmallestSectionMeanDiameterMm(inOuter, onAxis(h), neck, sac);
+  }
+  else
+    sizing.outerNeckDiameter15mm = sizing.neckDiameter15mm;
 }
 
 } // namespace
@@ -295,6 +338,7 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   const auto lumenRadius = [&](double h) { return wall ? wall->LumenRadius(h) : radiusAtZ(h); };
   sizing.proximalNeckDiameter = 2 * lumenRadius(siteZ);
   sizing.neckDiameter15mm = 2 * lumenRadius(siteZ - 15.0);
+  NeckBendSectionTruth(anatomy, p, radiusAtZ, sacTop, siteZ - 15.0, onAxis, neckDirection, sizing);
   double widestLumen = 0.0, widestH = siteZ;
   for (double h = 0.0; h <= siteZ; h += 0.01)
     if (lumenRadius(h) > widestLumen)
@@ -404,7 +448,7 @@ void SampleVessels(const Anatomy& anatomy, PhantomTruth& truth)
     radii.push_back(tube.radiusAt(start));
     abscissa.push_back(start);
     PhantomVessel vessel{ tube.name, Points(points.size(), 3), Eigen::VectorXd(radii.size()),
-                          Eigen::VectorXd(radii.size()) };
+                          Eigen::VectorXd(radii.size()), Eigen::VectorXd() };
     // The largest sphere centred on the axis at s touches the wall where sqrt((s' − s)² + r(s')²)
     // is smallest (exact on straight pieces; the bent vessels have a constant radius).
     std::vector<double> fine;
@@ -419,6 +463,12 @@ void SampleVessels(const Anatomy& anatomy, PhantomTruth& truth)
       for (std::size_t j = 0; j < fine.size(); ++j)
         inscribed = std::min(inscribed, std::hypot(0.05 * double(j) - si, fine[j]));
       vessel.inscribedRadiusMm[i] = inscribed;
+    }
+    if (tube.name == "aorta" && anatomy.wall)
+    {
+      vessel.outerRadiusMm.resize(radii.size());
+      for (std::size_t i = 0; i < points.size(); ++i)
+        vessel.outerRadiusMm[i] = anatomy.wall->OuterRadius(anatomy.wall->At(points[i]).h);
     }
     truth.vessels.push_back(vessel);
   }

@@ -4,9 +4,11 @@
 #include <cmath>
 
 #include <gtest/gtest.h>
+#include <itkImageRegionIteratorWithIndex.h>
 
 #include "Common/Errors.h"
 #include "Common/ImageGeometry.h"
+#include "Measurement/SectionTilt.h"
 #include "Phantom/AorticPhantom.h"
 
 namespace sgp
@@ -107,6 +109,37 @@ TEST(AorticPhantom, NeckAngle_NeckAxisLeansAnteriorlyByBeta)
   const Point3 onNeck = bend + 40.0 * neck, straight = bend + Point3(0, 0, 40.0);
   EXPECT_EQ(LabelAt(phantom, onNeck), LumenLabel);
   EXPECT_EQ(LabelAt(phantom, straight), TissueLabel); // 40·sin 40° = 26 mm from the neck's axis
+}
+
+TEST(AorticPhantom, NeckBend_BTruthIsTheNarrowestSectionNearTheKink)
+{
+  // A 15.5 mm neck: (b) lies on the neck 0.5 mm above the sac's top, where the neck bends. Straight
+  // (β = 0) its truth is the neck's disc, 22 mm. At β = 55° the sac's tube reaches into that plane
+  // (KinkSection.h: within about r·sin β of the kink), and the truth is the narrowest section of
+  // the phantom's own lumen through the level. Cross-checked against the plan's own search
+  // (FindNarrowestSection) on the phantom's sharp label map: two implementations, one analytic,
+  // one on voxels, within 0.5 mm (0.8 mm pixels: up to half a pixel per edge, averaged over the
+  // chords); the voxels' reading lies 0.9 mm from the disc's 22 mm, the analytic truth 0.7 mm.
+  // On a 35 mm neck at β = 55° the level is 20 mm from the kink: the disc again.
+  PhantomParams p;
+  p.neckLengthMm = 15.5;
+  EXPECT_NEAR(GenerateAorticPhantom(p).truth.sizing.neckDiameter15mm, 22.0, 1e-9);
+  p.neckAngleDeg = 55.0;
+  const AorticPhantom bent = GenerateAorticPhantom(p);
+  const double b = bent.truth.sizing.neckDiameter15mm;
+  auto lumen = LabelImage::New();
+  lumen->CopyInformation(bent.labels);
+  lumen->SetRegions(bent.labels->GetLargestPossibleRegion());
+  lumen->Allocate(true);
+  for (itk::ImageRegionIteratorWithIndex<LabelImage> it(lumen, lumen->GetLargestPossibleRegion()); !it.IsAtEnd(); ++it)
+    it.Set(bent.labels->GetPixel(it.GetIndex()) == LumenLabel ? 1 : 0);
+  const double beta = 55.0 * M_PI / 180.0;
+  const Eigen::Vector3d neck(0.0, -std::sin(beta), std::cos(beta)); // upward along the neck
+  const NarrowestSection s = FindNarrowestSection(*lumen, Point3(Point3(0.0, 0.0, 100.0) + 0.5 * neck), -neck, 30.0);
+  EXPECT_NEAR(s.meanMm, b, 0.5);
+  EXPECT_GT(std::abs(s.meanMm - 22.0), 0.5); // a truth left at the disc's value fails the cross-check
+  p.neckLengthMm = 35.0;
+  EXPECT_NEAR(GenerateAorticPhantom(p).truth.sizing.neckDiameter15mm, 22.0, 1e-9);
 }
 
 // The proximal site is the lower edge of the lowest renal's ostium on the lumen's wall (evar-sizing
