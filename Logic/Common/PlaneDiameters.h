@@ -10,7 +10,9 @@
 /// Errors: none.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -24,18 +26,28 @@ inline Eigen::Vector3d PerpendicularTo(const Eigen::Vector3d& n)
   return n.cross(other).normalized();
 }
 
+/// The `count` diameters themselves, in order from PerpendicularTo(normal).
 template<class EdgeDistance>
-double MeanDiameterInPlane(const Eigen::Vector3d& normal, int count, const EdgeDistance& edgeDistance)
+std::vector<double> DiametersInPlane(const Eigen::Vector3d& normal, int count, const EdgeDistance& edgeDistance)
 {
   constexpr double pi = 3.14159265358979323846;
   const Eigen::Vector3d n = normal.normalized(), u = PerpendicularTo(n), v = n.cross(u);
-  double sum = 0.0;
+  std::vector<double> diameters(static_cast<std::size_t>(std::max(count, 0)));
   for (int k = 0; k < count; ++k)
   {
     const double angle = pi * k / count;
     const Eigen::Vector3d e = std::cos(angle) * u + std::sin(angle) * v;
-    sum += edgeDistance(e) + edgeDistance(Eigen::Vector3d(-e));
+    diameters[static_cast<std::size_t>(k)] = edgeDistance(e) + edgeDistance(Eigen::Vector3d(-e));
   }
+  return diameters;
+}
+
+template<class EdgeDistance>
+double MeanDiameterInPlane(const Eigen::Vector3d& normal, int count, const EdgeDistance& edgeDistance)
+{
+  double sum = 0.0;
+  for (double d : DiametersInPlane(normal, count, edgeDistance))
+    sum += d;
   return sum / count;
 }
 

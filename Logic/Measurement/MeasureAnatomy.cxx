@@ -364,6 +364,7 @@ void LeaveOutBOnABend(const MeasureContext& c, const LabelImage* lumen, Measurem
   if (!(change > SectionTiltMaxMm))
     return;
   const std::string list = LeaveOut({ "neckLumenDiameter15mm", "neckDiameter15mm", "neckConicity" }, out);
+  out.reverseTaperMm[1] = nan; // the outer (b) less (a): not measured with it
   out.warnings.push_back("(b) is not measured: 15 mm below the proximal site the lumen's diameter changes by " +
                          FormatNumber(change, 1) + " mm when the plane is tilted by " +
                          FormatNumber(SectionTiltDeg, 0) +
@@ -376,10 +377,12 @@ void LeaveOutBOnABend(const MeasureContext& c, const LabelImage* lumen, Measurem
 /// angled neck the smoothed centerline's direction at (b) runs up to 16° off the vessel's axis
 /// (issue 32's sweep), and the ring's plane ⊥ it cuts the lumen obliquely, wide. Where the
 /// narrowest plane through the ring's centre, within ObliqueSearchDeg, is narrower than the ring's
-/// own plane by more than ObliqueExcessMm, the lumen and outer (b) (mean, extremes, area) and the
+/// own plane by more than ObliqueExcessMm, the lumen and outer (b) (mean, area-equivalent) and the
 /// reverse taper over 15 mm are scaled by the ratio of the two planes' mean diameters — an oblique
-/// cut of a tube widens every concentric contour by the same factor — with a warning. Not where
-/// (b) is left out on a bend (LeaveOutBOnABend, later).
+/// cut of a tube widens every concentric contour by the same factor — and their smallest and
+/// largest diameters each by the ratio of the two planes' own (an oblique cut widens the long axis
+/// only), with a warning. The diameter profile keeps the ring's own reading. Not where (b) is left
+/// out on a bend (LeaveOutBOnABend, later).
 void ReadBInTheNarrowestPlane(const MeasureContext& c, const LabelImage* lumen, Measurements& out)
 {
   Measurement* lumenB = nullptr;
@@ -394,13 +397,14 @@ void ReadBInTheNarrowestPlane(const MeasureContext& c, const LabelImage* lumen, 
   if (!(section.givenPlaneMeanMm - section.meanMm > ObliqueExcessMm))
     return;
   const double ratio = section.meanMm / section.givenPlaneMeanMm;
+  const double minRatio = section.minMm / section.givenPlaneMinMm, maxRatio = section.maxMm / section.givenPlaneMaxMm;
   const double aOuter = out.Value("proximalNeckDiameter");
   for (Measurement& m : out.values)
     if (m.name == "neckLumenDiameter15mm" || m.name == "neckDiameter15mm")
     {
       m.value *= ratio;
-      m.minMm *= ratio;
-      m.maxMm *= ratio;
+      m.minMm *= minRatio;
+      m.maxMm *= maxRatio;
       m.areaMm *= ratio;
       m.definition += ", scaled to the lumen's narrowest plane through the ring's centre";
     }
@@ -412,7 +416,7 @@ void ReadBInTheNarrowestPlane(const MeasureContext& c, const LabelImage* lumen, 
                          FormatNumber(section.tiltDeg, 1) +
                          " degrees from it (the centerline's direction on the bend below an angled neck), so (b)'s "
                          "diameters are scaled by " +
-                         FormatNumber(ratio, 3) + ".");
+                         FormatNumber(ratio, 3) + " (the diameter profile keeps the ring's own reading).");
 }
 
 /// The site not known (ProximalSiteSource::None): every value measured from it is NaN — the neck's

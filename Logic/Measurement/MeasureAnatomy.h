@@ -98,7 +98,7 @@ constexpr double SectionTiltMaxMm = 2.0;
 /// twice the largest angle between the smoothed centerline and the phantoms' axis at (b) on issue
 /// 32's sweep (16°); on a tube the narrowest plane is ⊥ its axis whatever the search's reach.
 /// 0.5 mm: half the lumen's tolerance, above the search's own spread where the centerline is on
-/// the axis (the smallest of some 200 interpolated sections of a straight neck lies up to
+/// the axis (the smallest of about 240 interpolated sections of a straight neck lies up to
 /// ObliqueExcessMm below the perpendicular one's, which must not move the reading).
 constexpr double ObliqueSearchDeg = 30.0;
 constexpr double ObliqueExcessMm = 0.5;

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -109,6 +112,18 @@ double SmoothMeanDiameterMm(const SmoothMask& mask, const Point3& centre, const 
                              [&](const Eigen::Vector3d& e) { return SmoothBoundaryDistance(mask, centre, e); });
 }
 
+/// The smallest and largest of those diameters.
+std::pair<double, double> SmoothDiameterExtremesMm(const SmoothMask& mask,
+                                                   const Point3& centre,
+                                                   const Eigen::Vector3d& normal,
+                                                   int count)
+{
+  const std::vector<double> d =
+    DiametersInPlane(normal, count, [&](const Eigen::Vector3d& e) { return SmoothBoundaryDistance(mask, centre, e); });
+  const auto [low, high] = std::minmax_element(d.begin(), d.end());
+  return { *low, *high };
+}
+
 } // namespace
 
 double LumenMeanDiameterMm(const LabelImage& lumen,
@@ -175,6 +190,8 @@ NarrowestSection FindNarrowestSection(const LabelImage& lumen,
     for (double dt = -1.5; dt <= 1.5 + 1e-9; dt += 0.5)
       for (double da = -10.0; da <= 10.0 + 1e-9; da += 2.5)
         consider(tilt0 + dt, azimuth0 + da);
+  std::tie(best.minMm, best.maxMm) = SmoothDiameterExtremesMm(mask, centre, best.normal, diameterCount);
+  std::tie(best.givenPlaneMinMm, best.givenPlaneMaxMm) = SmoothDiameterExtremesMm(mask, centre, n, diameterCount);
   return best;
 }
 

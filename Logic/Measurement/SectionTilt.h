@@ -40,13 +40,15 @@ double TiltSensitivityMm(const LabelImage& lumen, const Point3& centre, const Ei
 /// tilt of the plane changes the mean smoothly, not by whole voxels): `diameterCount` chords,
 /// 0.5 mm march then bisection to 0.01 mm. Search: tilts every 3° to `maxTiltDeg` in 20° steps of
 /// azimuth, then around the best ±1.5° of tilt in 0.5° steps by ±10° of azimuth in 2.5° steps
-/// (some 270 sections: about 5 ms on a 22 mm tube, SectionPlanesTest).
+/// (about 240 sections: some 5 ms on a 22 mm tube, SectionPlanesTest).
 struct NarrowestSection
 {
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); ///< unit
-  double tiltDeg = 0.0;                              ///< from `normal`
-  double meanMm = 0.0;                               ///< its mean diameter
-  double givenPlaneMeanMm = 0.0;                     ///< the mean diameter in the plane ⊥ `normal`
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();   ///< unit
+  double tiltDeg = 0.0;                                ///< from `normal`
+  double meanMm = 0.0;                                 ///< its mean diameter
+  double minMm = 0.0, maxMm = 0.0;                     ///< its smallest and largest of the diameters
+  double givenPlaneMeanMm = 0.0;                       ///< the mean diameter in the plane ⊥ `normal`
+  double givenPlaneMinMm = 0.0, givenPlaneMaxMm = 0.0; ///< that plane's smallest and largest
 };
 NarrowestSection FindNarrowestSection(const LabelImage& lumen,
                                       const Point3& centre,

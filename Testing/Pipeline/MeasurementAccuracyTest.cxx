@@ -170,6 +170,7 @@ TEST_P(ShortAngledNeck, BWithinToleranceOrNotMeasuredWithTheReason)
     // Not measured: the plan says why, and the conicity built on it is left out too.
     EXPECT_TRUE(Warned(plan, "(b) is not measured: 15 mm below the proximal site the lumen's diameter changes by"));
     EXPECT_TRUE(std::isnan(m.Value("neckConicity")));
+    EXPECT_TRUE(std::isnan(m.reverseTaperMm[1])); // the outer (b) less (a): it reached the neck rules
     return;
   }
   // Measured: within the tolerance (1.0 mm; 1.5 mm on thicker slices) plus the slope
