@@ -354,14 +354,10 @@ double BTiltChangeMm(const MeasureContext& c, const LabelImage& lumen)
 /// the plane ⊥ the aorta at (b)'s level changes by more than SectionTiltMaxMm when the plane is
 /// tilted by SectionTiltDeg — a bend that is also the sac's shoulder, below a short angled neck.
 /// The lumen and outer (b) and the conicity built on them are NaN, with one warning giving the
-/// numbers. Without the lumen mask (`lumen` null) nothing is checked.
-void LeaveOutBOnABend(const MeasureContext& c, const LabelImage* lumen, Measurements& out)
+/// numbers. `change` is BTiltChangeMm, NaN (nothing checked) without the lumen mask or the site.
+void LeaveOutBOnABend(double change, Measurements& out)
 {
-  const double b = out.Value("neckLumenDiameter15mm");
-  if (!lumen || !c.site.Known() || !(b > 0.0))
-    return;
-  const double change = BTiltChangeMm(c, *lumen);
-  if (!(change > SectionTiltMaxMm))
+  if (!(out.Value("neckLumenDiameter15mm") > 0.0) || !(change > SectionTiltMaxMm))
     return;
   const std::string list = LeaveOut({ "neckLumenDiameter15mm", "neckDiameter15mm", "neckConicity" }, out);
   out.reverseTaperMm[1] = nan; // the outer (b) less (a): not measured with it
@@ -382,14 +378,14 @@ void LeaveOutBOnABend(const MeasureContext& c, const LabelImage* lumen, Measurem
 /// cut of a tube widens every concentric contour by the same factor — and their smallest and
 /// largest diameters each by the ratio of the two planes' own (an oblique cut widens the long axis
 /// only), with a warning. The diameter profile keeps the ring's own reading. Not where (b) is left
-/// out on a bend (LeaveOutBOnABend, later).
-void ReadBInTheNarrowestPlane(const MeasureContext& c, const LabelImage* lumen, Measurements& out)
+/// out on a bend (LeaveOutBOnABend, later; `bTiltChange` is its BTiltChangeMm).
+void ReadBInTheNarrowestPlane(const MeasureContext& c, const LabelImage* lumen, double bTiltChange, Measurements& out)
 {
   Measurement* lumenB = nullptr;
   for (Measurement& m : out.values)
     if (m.name == "neckLumenDiameter15mm")
       lumenB = &m;
-  if (!lumen || !c.site.Known() || !lumenB || !(lumenB->value > 0.0) || BTiltChangeMm(c, *lumen) > SectionTiltMaxMm)
+  if (!lumen || !c.site.Known() || !lumenB || !(lumenB->value > 0.0) || bTiltChange > SectionTiltMaxMm)
     return;
   const double s = c.sSite + secondDiameterDepthMm;
   const NarrowestSection section =
@@ -503,7 +499,9 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
   else
     out.warnings.push_back("The outer wall was not traced: the outer-wall diameters (a)-(f) and the thrombus values "
                            "are not measured.");
-  ReadBInTheNarrowestPlane(c, lumen, out);
+  // How much a tilt of (b)'s plane changes the lumen's diameter: both (b) rules read it.
+  const double bTiltChange = lumen && c.site.Known() ? BTiltChangeMm(c, *lumen) : nan;
+  ReadBInTheNarrowestPlane(c, lumen, bTiltChange, out);
   // The neck's end on the outer wall where it was found (the IFU's and the truth's definition),
   // else on the lumen's rings.
   const double sLumenNeckEnd = FindNeckEnd(c, a, widest, out);
@@ -519,7 +517,7 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
   MeasureIliacAccess(c, iliacOffset, out);
   LeaveOutWhatTheScanDoesNotHold(c, out);
   LeaveOutWhatNeedsTheSite(c, out);
-  LeaveOutBOnABend(c, lumen, out);
+  LeaveOutBOnABend(bTiltChange, out);
   return out;
 }
 

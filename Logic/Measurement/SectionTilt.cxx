@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
-#include <utility>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -106,22 +104,21 @@ double SmoothBoundaryDistance(const SmoothMask& mask, const Point3& centre, cons
   return 0.5 * (in + out);
 }
 
-double SmoothMeanDiameterMm(const SmoothMask& mask, const Point3& centre, const Eigen::Vector3d& normal, int count)
+/// One plane's diameters through `centre`: their mean, smallest and largest.
+struct PlaneReading
 {
-  return MeanDiameterInPlane(normal, count,
-                             [&](const Eigen::Vector3d& e) { return SmoothBoundaryDistance(mask, centre, e); });
-}
+  double meanMm = 0.0, minMm = 0.0, maxMm = 0.0;
+};
 
-/// The smallest and largest of those diameters.
-std::pair<double, double> SmoothDiameterExtremesMm(const SmoothMask& mask,
-                                                   const Point3& centre,
-                                                   const Eigen::Vector3d& normal,
-                                                   int count)
+PlaneReading ReadPlane(const SmoothMask& mask, const Point3& centre, const Eigen::Vector3d& normal, int count)
 {
   const std::vector<double> d =
     DiametersInPlane(normal, count, [&](const Eigen::Vector3d& e) { return SmoothBoundaryDistance(mask, centre, e); });
+  double sum = 0.0;
+  for (double x : d)
+    sum += x;
   const auto [low, high] = std::minmax_element(d.begin(), d.end());
-  return { *low, *high };
+  return { sum / count, *low, *high };
 }
 
 } // namespace
@@ -164,19 +161,20 @@ NarrowestSection FindNarrowestSection(const LabelImage& lumen,
     const Eigen::Vector3d toward = std::cos(a) * u + std::sin(a) * v;
     return Eigen::Vector3d(Eigen::AngleAxisd(tiltDeg * pi / 180.0, n.cross(toward)) * n);
   };
+  const PlaneReading given = ReadPlane(mask, centre, n, diameterCount);
+  PlaneReading narrowest = given;
   NarrowestSection best;
   best.normal = n;
-  best.givenPlaneMeanMm = best.meanMm = SmoothMeanDiameterMm(mask, centre, n, diameterCount);
   double bestAzimuth = 0.0;
   const auto consider = [&](double tiltDeg, double azimuthDeg)
   {
     if (tiltDeg < 0.0 || tiltDeg > maxTiltDeg + 1e-9)
       return;
     const Eigen::Vector3d candidate = tilted(tiltDeg, azimuthDeg);
-    const double mean = SmoothMeanDiameterMm(mask, centre, candidate, diameterCount);
-    if (mean < best.meanMm)
+    const PlaneReading reading = ReadPlane(mask, centre, candidate, diameterCount);
+    if (reading.meanMm < narrowest.meanMm)
     {
-      best.meanMm = mean;
+      narrowest = reading;
       best.normal = candidate;
       best.tiltDeg = tiltDeg;
       bestAzimuth = azimuthDeg;
@@ -190,8 +188,12 @@ NarrowestSection FindNarrowestSection(const LabelImage& lumen,
     for (double dt = -1.5; dt <= 1.5 + 1e-9; dt += 0.5)
       for (double da = -10.0; da <= 10.0 + 1e-9; da += 2.5)
         consider(tilt0 + dt, azimuth0 + da);
-  std::tie(best.minMm, best.maxMm) = SmoothDiameterExtremesMm(mask, centre, best.normal, diameterCount);
-  std::tie(best.givenPlaneMinMm, best.givenPlaneMaxMm) = SmoothDiameterExtremesMm(mask, centre, n, diameterCount);
+  best.meanMm = narrowest.meanMm;
+  best.minMm = narrowest.minMm;
+  best.maxMm = narrowest.maxMm;
+  best.givenPlaneMeanMm = given.meanMm;
+  best.givenPlaneMinMm = given.minMm;
+  best.givenPlaneMaxMm = given.maxMm;
   return best;
 }
 

@@ -200,6 +200,13 @@ double AorticWall::ThrombusThicknessAt(double h, double thetaDeg) const
   return std::max(0.0, InnerRadius(h, thetaDeg) - t);
 }
 
+Point3 AorticWall::LumenCentreLps(double h) const
+{
+  const auto frame = Frame(h);
+  const Eigen::Vector2d c = LumenCentre(h);
+  return AxisPoint(h) + c.x() * frame[0] + c.y() * frame[1];
+}
+
 void AorticWall::SampleLumen(double stepMm, std::vector<Point3>& points, std::vector<double>& radii) const
 {
   points.clear();
@@ -207,9 +214,7 @@ void AorticWall::SampleLumen(double stepMm, std::vector<Point3>& points, std::ve
   for (double h = m_TopH;; h -= stepMm)
   {
     h = std::max(h, 0.0);
-    const auto frame = Frame(h);
-    const Eigen::Vector2d c = LumenCentre(h);
-    points.push_back(AxisPoint(h) + c.x() * frame[0] + c.y() * frame[1]);
+    points.push_back(LumenCentreLps(h));
     radii.push_back(LumenRadius(h));
     if (h <= 0.0)
       break;

@@ -104,6 +104,8 @@ public:
   double ThrombusThickness(double h) const;
   /// The lumen disc at h: its centre in the plane (anterior, left) and its radius.
   Eigen::Vector2d LumenCentre(double h) const;
+  /// The same centre in LPS: the axis point at h moved by LumenCentre in the plane's frame.
+  Point3 LumenCentreLps(double h) const;
   double LumenRadius(double h) const;
   /// The thrombus's thickness at h along the in-plane direction θ: from the lumen's edge to the
   /// inner wall (0 where the lumen touches the wall).

@@ -138,13 +138,7 @@ void NeckBendSectionTruth(const Anatomy& anatomy,
   const AorticWall* wall = anatomy.wall.get();
   TubeDistance lumenTube(anatomy.tubes.front());
   const auto inLumen = [&](const Point3& x) { return lumenTube.SignedDistance(x) < 0.0; };
-  Point3 lumenCentre = onAxis(h);
-  if (wall)
-  {
-    const auto frame = wall->Frame(h);
-    const Eigen::Vector2d c = wall->LumenCentre(h);
-    lumenCentre += c.x() * frame[0] + c.y() * frame[1];
-  }
+  const Point3 lumenCentre = wall ? wall->LumenCentreLps(h) : onAxis(h);
   sizing.neckDiameter15mm = SmallestSectionMeanDiameterMm(inLumen, lumenCentre, neck, sac);
   if (wall)
   {
@@ -396,13 +390,7 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   sizing.neckAngleBetaDeg = p.neckAngleDeg;
   // On the aneurysm lumen's axis at mid-sac (off the vessel's axis where there is a thrombus).
   const double seedH = 0.5 * (sacTop + sacBottom);
-  truth.seedLps = Point3(0, 0, seedH);
-  if (wall)
-  {
-    const auto frame = wall->Frame(seedH);
-    const Eigen::Vector2d c = wall->LumenCentre(seedH);
-    truth.seedLps += c.x() * frame[0] + c.y() * frame[1];
-  }
+  truth.seedLps = wall ? wall->LumenCentreLps(seedH) : Point3(0, 0, seedH);
   // The side branches' own walls (renal, mesenteric, coeliac arteries): a quarter of their radius,
   // at most the aorta's wall. Every artery's lumen meets its wall, not the fat beyond it; without
   // one a branch's edge is a lumen-to-fat step the lumen's half-maximum against its wall misses
