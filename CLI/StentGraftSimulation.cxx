@@ -105,10 +105,10 @@ int main(int argc, char* argv[])
     CtVolume volume = clp::WithStderrDropped([&] { return ReadCtImage(inputVolume); });
     PrintWarnings(volume.warnings, std::cerr);
 
-    // `labelMapWritten` is declared after `outputs`, so on an exception it is waited for before
-    // the transaction removes the staged file.
+    // `labelMapWritten` and `wallLabelMapWritten` are declared after `outputs`, so on an exception
+    // they are waited for before the transaction removes the staged files.
     OutputTransaction outputs;
-    std::future<void> labelMapWritten;
+    std::future<void> labelMapWritten, wallLabelMapWritten;
     PlanObserver observer;
     observer.begin = [&](std::string_view name, std::string_view text)
     { progress.Begin(std::string(name), std::string(text)); };
@@ -122,14 +122,25 @@ int main(int argc, char* argv[])
         labelMapWritten = std::async(std::launch::async, [mask = lumen.mask, staged = outputs.Stage(paths.labelMap)]
                                      { WriteLabelMap(*mask, staged); });
     };
+    observer.wallLabelsReady = [&](const LabelImage::Pointer& labels)
+    {
+      // Likewise the wall label map, while the plan measures, chooses and deploys the graft.
+      if (!paths.wallLabelMap.empty())
+        wallLabelMapWritten = std::async(std::launch::async, [labels, staged = outputs.Stage(paths.wallLabelMap)]
+                                         { WriteLabelMap(*labels, staged); });
+    };
     // The plan takes the only reference to the CT, so the input is freed once the lumen is segmented.
     const std::optional<Point3> seedLps = seed.empty() ? std::nullopt : std::optional<Point3>(RasToLps(seed));
     const RepairPlan plan = PlanRepair(std::move(volume.image), seedLps, request, params, observer);
 
     progress.Begin("WriteOutputs", "Writing the outputs");
-    if (labelMapWritten.valid())
-      labelMapWritten.get(); // rethrows a write error
-    WritePlanOutputs(plan, paths, run, outputs);
+    PlanOutputPaths rest = paths;
+    if (wallLabelMapWritten.valid())
+      rest.wallLabelMap.clear(); // being written on the second core
+    WritePlanOutputs(plan, rest, run, outputs);
+    for (std::future<void>* written : { &labelMapWritten, &wallLabelMapWritten })
+      if (written->valid())
+        written->get(); // rethrows a write error
     if (!paths.returnParameterFile.empty())
       PrintUnmeasuredValues(PlanReturnValues(plan), std::cerr);
     outputs.Commit();

@@ -13,6 +13,7 @@ SGP_PYTHON=/usr/bin/python3 # Debian's, with numpy; `python3` on the PATH may be
 SGP_PACKAGES=(
   cmake g++ make
   libinsighttoolkit5-dev libvtk9-dev libtclap-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev
+  libdeflate-dev # the reader's fast path for gzip NRRD (Logic/IO/InflateGzipNrrd.h)
   python3 python3-numpy python3-scipy python3-skimage python3-jsonschema python3-vtk9 python3-pyflakes
   libgdcm-tools
   chromium # the visual report is checked in a real browser (Testing/CLI/test_report_html.py)

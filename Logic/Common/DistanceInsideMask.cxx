@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "Common/TwoCores.h"
+
 namespace sgp
 {
 
@@ -102,67 +104,81 @@ DistanceField DistanceInsideMask(const MaskGrid& mask,
   // Squared distances (mm²) until the last step; float is exact enough: at 100 mm, 0.001 mm.
   std::vector<float>& squared = field.distanceMm;
   squared.assign(std::size_t(count), std::numeric_limits<float>::infinity());
-  for (long flat = 0; flat < count; ++flat)
-    if (!mask.voxels[flat])
-    {
-      const auto ijk = mask.Ijk(flat);
-      squared[std::size_t(flat)] = 0.0f;
-      site[std::size_t(flat)] = { int(ijk[0]), int(ijk[1]), int(ijk[2]) };
-    }
+  const long slice = n[0] * n[1];
+  // Every loop below on both cores: the first two over slices, each pass over its lines (a line
+  // reads and writes its own voxels only), so the field is the same as one core's, bit for bit.
+  OnTwoCores(n[2],
+             [&](long firstSlice, long endSlice)
+             {
+               for (long flat = firstSlice * slice; flat < endSlice * slice; ++flat)
+                 if (!mask.voxels[flat])
+                 {
+                   const auto ijk = mask.Ijk(flat);
+                   squared[std::size_t(flat)] = 0.0f;
+                   site[std::size_t(flat)] = { int(ijk[0]), int(ijk[1]), int(ijk[2]) };
+                 }
+             });
   const std::array<long, 3> stride{ 1, n[0], n[0] * n[1] };
-  LineTransform transform;
-  std::vector<double> f, best;
-  std::vector<long> from;
-  std::vector<std::array<int, 3>> lineSites;
   for (int axis = 0; axis < 3; ++axis)
   {
     // The two axes that index the lines, u the faster: neighbouring lines share cache lines.
     const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
     const long length = n[axis];
-    f.resize(std::size_t(length));
-    lineSites.resize(std::size_t(length));
-    for (long b = 0; b < n[v]; ++b)
-      for (long a = 0; a < n[u]; ++a)
-      {
-        const long start = a * stride[u] + b * stride[v];
-        // A line of background only (distance 0 throughout) stays as it is: most lines of a
-        // lumen's bounding box.
-        bool foreground = false;
-        for (long q = 0; q < length && !foreground; ++q)
-          foreground = mask.voxels[start + q * stride[axis]] != 0;
-        if (!foreground)
-          continue;
-        for (long q = 0; q < length; ++q)
-        {
-          f[std::size_t(q)] = squared[std::size_t(start + q * stride[axis])];
-          lineSites[std::size_t(q)] = site[std::size_t(start + q * stride[axis])];
-        }
-        transform.Run(f, spacingMm[axis], outsideIsBackground, best, from);
-        for (long p = 0; p < length; ++p)
-        {
-          const long flat = start + p * stride[axis];
-          squared[std::size_t(flat)] = static_cast<float>(best[std::size_t(p)]);
-          const long q = from[std::size_t(p)];
-          if (q == -2)
-            continue;
-          if (q < 0 || q >= length)
-          {
-            // The virtual site in the shell: straight across this axis from the voxel itself.
-            std::array<int, 3> s{};
-            s[std::size_t(axis)] = int(q);
-            s[std::size_t(u)] = int(a);
-            s[std::size_t(v)] = int(b);
-            site[std::size_t(flat)] = s;
-          }
-          else
-          {
-            site[std::size_t(flat)] = lineSites[std::size_t(q)];
-          }
-        }
-      }
+    OnTwoCores(n[v],
+               [&](long firstB, long endB)
+               {
+                 LineTransform transform;
+                 std::vector<double> f(static_cast<std::size_t>(length)), best;
+                 std::vector<long> from;
+                 std::vector<std::array<int, 3>> lineSites(static_cast<std::size_t>(length));
+                 for (long b = firstB; b < endB; ++b)
+                   for (long a = 0; a < n[u]; ++a)
+                   {
+                     const long start = a * stride[u] + b * stride[v];
+                     // A line of background only (distance 0 throughout) stays as it is: most lines of a
+                     // lumen's bounding box.
+                     bool foreground = false;
+                     for (long q = 0; q < length && !foreground; ++q)
+                       foreground = mask.voxels[start + q * stride[axis]] != 0;
+                     if (!foreground)
+                       continue;
+                     for (long q = 0; q < length; ++q)
+                     {
+                       f[std::size_t(q)] = squared[std::size_t(start + q * stride[axis])];
+                       lineSites[std::size_t(q)] = site[std::size_t(start + q * stride[axis])];
+                     }
+                     transform.Run(f, spacingMm[axis], outsideIsBackground, best, from);
+                     for (long p = 0; p < length; ++p)
+                     {
+                       const long flat = start + p * stride[axis];
+                       squared[std::size_t(flat)] = static_cast<float>(best[std::size_t(p)]);
+                       const long q = from[std::size_t(p)];
+                       if (q == -2)
+                         continue;
+                       if (q < 0 || q >= length)
+                       {
+                         // The virtual site in the shell: straight across this axis from the voxel itself.
+                         std::array<int, 3> s{};
+                         s[std::size_t(axis)] = int(q);
+                         s[std::size_t(u)] = int(a);
+                         s[std::size_t(v)] = int(b);
+                         site[std::size_t(flat)] = s;
+                       }
+                       else
+                       {
+                         site[std::size_t(flat)] = lineSites[std::size_t(q)];
+                       }
+                     }
+                   }
+               });
   }
-  for (float& d : squared)
-    d = std::min(std::sqrt(d), maximumDistanceMm); // no site at all: infinity, hence the maximum
+  OnTwoCores(n[2],
+             [&](long firstSlice, long endSlice)
+             {
+               // No site at all: infinity, hence the maximum.
+               for (long flat = firstSlice * slice; flat < endSlice * slice; ++flat)
+                 squared[std::size_t(flat)] = std::min(std::sqrt(squared[std::size_t(flat)]), maximumDistanceMm);
+             });
   return field;
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "Common/TwoCores.h"
+
 namespace sgp
 {
 
@@ -124,25 +126,31 @@ std::vector<std::array<int, 3>> PhysicalBallOffsets(const std::array<double, 3>&
 MaskGrid Erode(const MaskGrid& mask, const std::vector<std::array<int, 3>>& ball)
 {
   MaskGrid out(mask.size);
-  for (long flat = 0; flat < mask.Count(); ++flat)
-  {
-    if (!mask.voxels[flat])
-    {
-      continue;
-    }
-    const std::array<long, 3> ijk = mask.Ijk(flat);
-    bool keep = true;
-    for (const auto& d : ball)
-    {
-      const long i = ijk[0] + d[0], j = ijk[1] + d[1], k = ijk[2] + d[2];
-      if (!InBox(mask, i, j, k) || !mask.voxels[mask.Flat(i, j, k)])
-      {
-        keep = false;
-        break;
-      }
-    }
-    out.voxels[flat] = keep ? 1 : 0;
-  }
+  const long slice = mask.size[0] * mask.size[1];
+  // Each output voxel reads the input only: both cores, by slices (TwoCores.h).
+  OnTwoCores(mask.size[2],
+             [&](long firstSlice, long endSlice)
+             {
+               for (long flat = firstSlice * slice; flat < endSlice * slice; ++flat)
+               {
+                 if (!mask.voxels[flat])
+                 {
+                   continue;
+                 }
+                 const std::array<long, 3> ijk = mask.Ijk(flat);
+                 bool keep = true;
+                 for (const auto& d : ball)
+                 {
+                   const long i = ijk[0] + d[0], j = ijk[1] + d[1], k = ijk[2] + d[2];
+                   if (!InBox(mask, i, j, k) || !mask.voxels[mask.Flat(i, j, k)])
+                   {
+                     keep = false;
+                     break;
+                   }
+                 }
+                 out.voxels[flat] = keep ? 1 : 0;
+               }
+             });
   return out;
 }
 
@@ -216,7 +224,64 @@ std::vector<int> LabelComponents(const MaskGrid& mask, std::vector<long>& sizes)
   return labels;
 }
 
+namespace
+{
+
+/// FillHoles on the whole box (below).
+void FillHolesInBox(MaskGrid& mask);
+
+} // namespace
+
 void FillHoles(MaskGrid& mask)
+{
+  // Only the foreground's bounding box grown by a voxel needs the flood: a background voxel
+  // outside the foreground's box reaches the border in a straight line away from it, and a path
+  // from inside to the border crosses the grown box's surface, every background voxel of which
+  // is such a voxel or on the border itself. Same result, on the lumen's crop a third fewer voxels.
+  std::array<long, 3> low{ mask.size[0], mask.size[1], mask.size[2] }, high{ -1, -1, -1 };
+  for (long k = 0; k < mask.size[2]; ++k)
+    for (long j = 0; j < mask.size[1]; ++j)
+    {
+      const std::uint8_t* row = &mask.voxels[static_cast<std::size_t>(mask.Flat(0, j, k))];
+      const std::uint8_t* end = row + mask.size[0];
+      const std::uint8_t* first = std::find(row, end, std::uint8_t{ 1 });
+      if (first == end)
+        continue;
+      const std::uint8_t* last = end - 1;
+      while (!*last)
+        --last;
+      low = { std::min(low[0], long(first - row)), std::min(low[1], j), std::min(low[2], k) };
+      high = { std::max(high[0], long(last - row)), std::max(high[1], j), std::max(high[2], k) };
+    }
+  if (high[0] < 0)
+    return; // no foreground: no holes
+  std::array<long, 3> first{}, size{};
+  for (unsigned a = 0; a < 3; ++a)
+  {
+    first[a] = std::max(0L, low[a] - 1);
+    size[a] = std::min(mask.size[a] - 1, high[a] + 1) - first[a] + 1;
+  }
+  if (size == mask.size)
+  {
+    FillHolesInBox(mask);
+    return;
+  }
+  MaskGrid inner(size);
+  for (long k = 0; k < size[2]; ++k)
+    for (long j = 0; j < size[1]; ++j)
+      std::copy_n(&mask.voxels[static_cast<std::size_t>(mask.Flat(first[0], first[1] + j, first[2] + k))], size[0],
+                  &inner.voxels[static_cast<std::size_t>(inner.Flat(0, j, k))]);
+  FillHolesInBox(inner);
+  for (long k = 0; k < size[2]; ++k)
+    for (long j = 0; j < size[1]; ++j)
+      std::copy_n(&inner.voxels[static_cast<std::size_t>(inner.Flat(0, j, k))], size[0],
+                  &mask.voxels[static_cast<std::size_t>(mask.Flat(first[0], first[1] + j, first[2] + k))]);
+}
+
+namespace
+{
+
+void FillHolesInBox(MaskGrid& mask)
 {
   // Flood the outside from a one-voxel shell of background around the box (so the outside is one
   // connected region that touches every face of the box).
@@ -279,28 +344,37 @@ void FillHoles(MaskGrid& mask)
     }
 }
 
+} // namespace
+
 void FillSurfacePits(MaskGrid& mask, int minimumFaceNeighbours)
 {
-  std::vector<long> pits;
+  // The pits of the mask as given (found on both cores, each half its own list), then filled.
+  std::array<std::vector<long>, 2> pits;
   const long nx = mask.size[0], ny = mask.size[1], nz = mask.size[2], slice = nx * ny;
   const std::uint8_t* v = mask.voxels.data();
-  for (long k = 0; k < nz; ++k)
-    for (long j = 0; j < ny; ++j)
-      for (long i = 0, flat = nx * (j + ny * k); i < nx; ++i, ++flat)
-      {
-        if (v[flat])
-          continue;
-        const int neighbours = (i > 0 && v[flat - 1]) + (i + 1 < nx && v[flat + 1]) + (j > 0 && v[flat - nx]) +
-                               (j + 1 < ny && v[flat + nx]) + (k > 0 && v[flat - slice]) +
-                               (k + 1 < nz && v[flat + slice]);
-        if (neighbours >= minimumFaceNeighbours)
-          pits.push_back(flat);
-      }
-  for (const long flat : pits)
-    mask.voxels[flat] = 1;
+  OnTwoCores(nz,
+             [&](long firstSlice, long endSlice)
+             {
+               std::vector<long>& found = pits[firstSlice == 0 ? 0 : 1];
+               for (long k = firstSlice; k < endSlice; ++k)
+                 for (long j = 0; j < ny; ++j)
+                   for (long i = 0, flat = nx * (j + ny * k); i < nx; ++i, ++flat)
+                   {
+                     if (v[flat])
+                       continue;
+                     const int neighbours = (i > 0 && v[flat - 1]) + (i + 1 < nx && v[flat + 1]) +
+                                            (j > 0 && v[flat - nx]) + (j + 1 < ny && v[flat + nx]) +
+                                            (k > 0 && v[flat - slice]) + (k + 1 < nz && v[flat + slice]);
+                     if (neighbours >= minimumFaceNeighbours)
+                       found.push_back(flat);
+                   }
+             });
+  for (const std::vector<long>& found : pits)
+    for (const long flat : found)
+      mask.voxels[flat] = 1;
 }
 
-void GrowConstrained(MaskGrid& mask, const std::vector<bool>& accept, int steps)
+void GrowConstrained(MaskGrid& mask, const std::vector<std::uint8_t>& accept, int steps)
 {
   // The first front is the mask's boundary: an interior voxel has no background face to grow into.
   std::vector<long> front;

@@ -64,7 +64,7 @@ void FillHoles(MaskGrid& mask);
 /// face neighbours in the foreground (one pass): single-voxel pits that noise leaves in a surface.
 void FillSurfacePits(MaskGrid& mask, int minimumFaceNeighbours);
 
-/// Grows `mask` by up to `steps` 6-neighbour layers into voxels where `accept[flat]` is true.
-void GrowConstrained(MaskGrid& mask, const std::vector<bool>& accept, int steps);
+/// Grows `mask` by up to `steps` 6-neighbour layers into voxels where `accept[flat]` is non-zero.
+void GrowConstrained(MaskGrid& mask, const std::vector<std::uint8_t>& accept, int steps);
 
 } // namespace sgp

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <new>
+#include <type_traits>
 
 #include <itkGDCMImageIO.h>
 #include <itkGDCMSeriesFileNames.h>
@@ -11,6 +12,7 @@
 
 #include "Common/Errors.h"
 #include "Common/Format.h"
+#include "IO/InflateGzipNrrd.h"
 #include "IO/RegisterImageIOFactories.h"
 
 namespace sgp
@@ -124,8 +126,23 @@ template<typename Image>
 typename Image::Pointer ReadVolumeFile(const std::string& path)
 {
   auto reader = itk::ImageFileReader<Image>::New();
-  reader->SetImageIO(OpenVolumeFile(path));
+  const itk::ImageIOBase::Pointer io = OpenVolumeFile(path);
+  reader->SetImageIO(io);
   reader->SetFileName(path);
+  if constexpr (std::is_same_v<Image, CtImage>)
+  {
+    // A gzip NRRD of 16-bit HU: ITK's geometry, libdeflate's inflation (InflateGzipNrrd.h).
+    if (std::string(io->GetNameOfClass()) == "NrrdImageIO" && io->GetComponentType() == itk::IOComponentEnum::SHORT)
+    {
+      reader->UpdateOutputInformation();
+      auto image = CtImage::New();
+      image->CopyInformation(reader->GetOutput());
+      image->SetRegions(reader->GetOutput()->GetLargestPossibleRegion());
+      image->Allocate(false);
+      if (InflateGzipNrrdInto(path, *image))
+        return image;
+    }
+  }
   reader->Update();
   return reader->GetOutput();
 }

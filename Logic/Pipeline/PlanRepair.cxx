@@ -54,6 +54,11 @@ public:
       m_Observer.warn(warning);
   }
 
+  void WallLabelsReady(const LabelImage::Pointer& labels) const
+  {
+    if (m_Observer.wallLabelsReady && labels)
+      m_Observer.wallLabelsReady(labels);
+  }
   void LumenReady(const LumenSegmentation& lumen) const
   {
     if (m_Observer.lumenReady)
@@ -73,18 +78,20 @@ void SegmentLumen(const CtImage& ct,
 {
   report.Begin("SegmentLumen", "Segmenting the aortic lumen by region growing");
   plan.lumen = GrowLumenRegion(ct, seedLps, params.growing, report.Callback());
-  // A post-EVAR scan: its graft's struts break the lumen, and the plan would fail later with a
-  // wrong cause (or measure the graft); say what it is instead (FindEndograft.h).
-  const EndograftEvidence metal = FindEndograft(ct, *plan.lumen.mask, plan.lumen.box);
+  for (const std::string& w : plan.lumen.warnings)
+    report.Warn(w);
+}
+
+/// A post-EVAR scan: its graft's struts break the lumen, and the plan would fail later with a wrong
+/// cause (or measure the graft); says what it is instead (FindEndograft.h).
+void NoEndograft(const EndograftEvidence& metal)
+{
   if (metal.found)
     throw InputError("The aorta's lumen holds metal: stent rings up to " + FormatNumber(metal.maximumHu, 0) +
                      " HU all around it over " + FormatNumber(metal.ringLengthMm, 0) + " mm (z " +
                      FormatNumber(metal.ringFromZ, 0) + " to " + FormatNumber(metal.ringToZ, 0) +
                      " mm LPS), so an endograft or another metal device is already in place; this plan is for "
                      "pre-operative CT angiograms of an unrepaired aorta.");
-  for (const std::string& w : plan.lumen.warnings)
-    report.Warn(w);
-  report.LumenReady(plan.lumen);
 }
 
 void ExtractCenterlines(const PlanParams& params, const StageReporter& report, RepairPlan& plan)
@@ -165,6 +172,7 @@ void ReportWall(TracedWall traced, const PlanParams& params, const StageReporter
   report.OwnTime(traced.seconds);
   plan.vesselWall = std::move(traced.wall);
   plan.wallLabels = traced.labels;
+  report.WallLabelsReady(plan.wallLabels);
   if (plan.vesselWall.Empty())
     report.Warn("No outer wall was found around the lumen (no fat outside the vessel in any plane?): the "
                 "outer-wall diameters, the thrombus values and the sizing on them are not measured.");
@@ -538,12 +546,21 @@ RepairPlan PlanRepair(CtImage::ConstPointer ct,
     plan.seedDescription = found.description;
   }
   SegmentLumen(*ct, plan.seedLps, params, report, plan);
-  // Only the wall stage reads HU after segmentation, and only within its rays' reach of the lumen:
-  // keep that crop and free the input if the caller handed it over.
-  CtImage::Pointer around = request.through >= PlanStage::Measurements
-                              ? CropAroundLumen(*ct, *plan.lumen.mask, params.wall.outer.maxRadiusMm)
-                              : nullptr;
+  CtImage::Pointer around;
+  {
+    // The endograft check on the second core beside the crop of the CT the wall stage reads (only
+    // it reads HU after segmentation, and only within its rays' reach of the lumen); both only
+    // read the CT and the final mask. Then the input is freed, if the caller handed it over, before
+    // the thinning's buffers are added to the peak.
+    std::future<EndograftEvidence> metal =
+      std::async(std::launch::async, [&] { return FindEndograft(*ct, *plan.lumen.mask, plan.lumen.box); });
+    around = request.through >= PlanStage::Measurements
+               ? CropAroundLumen(*ct, *plan.lumen.mask, params.wall.outer.maxRadiusMm)
+               : nullptr;
+    NoEndograft(metal.get());
+  }
   ct = nullptr;
+  report.LumenReady(plan.lumen);
   plan.reached = PlanStage::Segmentation;
   if (request.through < PlanStage::Centerlines)
     return plan;

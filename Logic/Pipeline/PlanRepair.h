@@ -127,6 +127,9 @@ struct PlanObserver
   /// Called once the lumen is final, before the later stages run (a front end may start writing
   /// the label map on another core); the mask is not changed afterwards.
   std::function<void(const LumenSegmentation& lumen)> lumenReady;
+  /// Called once the wall label map is final (PlanRequest::wallLabelMap), before the measurements
+  /// (a front end may write it on another core); it is not changed afterwards.
+  std::function<void(const LabelImage::Pointer& labels)> wallLabelsReady;
 };
 
 /// The plan: each stage's result (empty where the plan did not reach it).

@@ -16,6 +16,7 @@
 #include "Common/ImageGeometry.h"
 #include "Common/IndexBox.h"
 #include "Common/MaskGrid.h"
+#include "Common/TwoCores.h"
 #include "Common/Median.h"
 
 namespace sgp::lumen_growth
@@ -74,7 +75,7 @@ void RefineBoundary(MaskGrid& lumen,
                     const std::vector<double>& edge,
                     LumenSegmentation& result)
 {
-  std::vector<bool> accept(static_cast<std::size_t>(lumen.Count()));
+  std::vector<std::uint8_t> accept(static_cast<std::size_t>(lumen.Count()));
   const long nx = lumen.size[0], ny = lumen.size[1], nz = lumen.size[2], slice = nx * ny;
   // Within refineDistanceMm of the grown region in millimetres, on every axis: counted in face
   // steps of the finest spacing, the reach along 2.5 mm slices was 3 slices, 7.5 mm — into an
@@ -92,11 +93,13 @@ void RefineBoundary(MaskGrid& lumen,
     }
     return false;
   };
-  for (long flat = 0; flat < lumen.Count(); ++flat)
-  {
-    accept[flat] = !lumen.voxels[flat] && hu[flat] >= edge[static_cast<std::size_t>(flat / slice)] &&
-                   hu[flat] <= result.upperHu && withinReach(flat);
-  }
+  OnTwoCores(nz,
+             [&](long firstSlice, long endSlice)
+             {
+               for (long flat = firstSlice * slice; flat < endSlice * slice; ++flat)
+                 accept[flat] = !lumen.voxels[flat] && hu[flat] >= edge[static_cast<std::size_t>(flat / slice)] &&
+                                hu[flat] <= result.upperHu && withinReach(flat);
+             });
   // Not into a calcium's or bone's blurred rim either (as GrowFromSeed).
   for (long flat = 0; flat < lumen.Count(); ++flat)
     if (hu[flat] > result.calciumHu)
@@ -129,9 +132,25 @@ LabelImage::Pointer PasteOnGrid(const CtImage& ct, const MaskGrid& lumen, const 
   LabelImage::Pointer mask = LabelImage::New();
   mask->CopyInformation(&ct);
   mask->SetRegions(ct.GetLargestPossibleRegion());
-  mask->Allocate(true);
-  ForEachInBox(box, ct.GetLargestPossibleRegion().GetSize(),
-               [&](long flat, long image) { mask->GetBufferPointer()[image] = lumen.voxels[flat]; });
+  mask->Allocate(false);
+  // The grid's pages are first touched here, slice by slice on both cores: zeroed, then the box's
+  // voxels pasted.
+  const itk::Size<3> size = ct.GetLargestPossibleRegion().GetSize();
+  const long slice = long(size[0]) * long(size[1]), boxSlice = box.size[0] * box.size[1];
+  OnTwoCores(long(size[2]),
+             [&](long first, long end)
+             {
+               LabelImage::PixelType* voxels = mask->GetBufferPointer();
+               std::fill(voxels + first * slice, voxels + end * slice, LabelImage::PixelType(0));
+               const long from = std::max(first, box.first[2]), to = std::min(end, box.first[2] + box.size[2]);
+               if (from >= to)
+                 return;
+               IndexBox part = box;
+               part.first[2] = from;
+               part.size[2] = to - from;
+               const long offset = (from - box.first[2]) * boxSlice;
+               ForEachInBox(part, size, [&](long flat, long image) { voxels[image] = lumen.voxels[offset + flat]; });
+             });
   return mask;
 }
 

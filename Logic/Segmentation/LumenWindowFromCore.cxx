@@ -17,6 +17,7 @@
 #include "Common/IndexBox.h"
 #include "Common/MaskGrid.h"
 #include "Common/Median.h"
+#include "Common/TwoCores.h"
 
 namespace sgp::lumen_growth
 {
@@ -59,18 +60,36 @@ MaskGrid LumenCore(const CtImage& ct, const MaskGrid& region, const IndexBox& bo
     coarseSize[a] = floorDiv(shift[a] + region.size[a] - 1, block[a]) - firstBlock[a] + 1;
     coarseSpacing[a] = double(block[a]) * spacing[a];
   }
-  // The block of crop voxel i along axis a.
-  const auto blockOf = [&](unsigned a, long i) { return floorDiv(shift[a] + i, block[a]) - firstBlock[a]; };
+  // The block of crop voxel i along axis a, looked up (a division per voxel and axis was most of
+  // this step's time).
+  std::array<std::vector<long>, 3> blockOf;
+  for (unsigned a = 0; a < 3; ++a)
+    for (long i = 0; i < region.size[a]; ++i)
+      blockOf[a].push_back(floorDiv(shift[a] + i, block[a]) - firstBlock[a]);
   MaskGrid coarse(coarseSize);
   std::vector<int> inside(static_cast<size_t>(coarse.Count()), 0), total(inside.size(), 0);
-  for (long k = 0; k < region.size[2]; ++k)
-    for (long j = 0; j < region.size[1]; ++j)
-      for (long i = 0; i < region.size[0]; ++i)
-      {
-        const size_t c = static_cast<size_t>(coarse.Flat(blockOf(0, i), blockOf(1, j), blockOf(2, k)));
-        ++total[c];
-        inside[c] += region.voxels[region.Flat(i, j, k)];
-      }
+  // On both cores, split between two layers of blocks (each block's counts are one half's).
+  long split = region.size[2] / 2;
+  while (split > 0 && blockOf[2][split] == blockOf[2][split - 1])
+    --split;
+  OnTwoCores(
+    region.size[2],
+    [&](long first, long end)
+    {
+      for (long k = first; k < end; ++k)
+        for (long j = 0; j < region.size[1]; ++j)
+        {
+          const long row = coarse.Flat(0, blockOf[1][j], blockOf[2][k]);
+          const std::uint8_t* voxel = &region.voxels[region.Flat(0, j, k)];
+          for (long i = 0; i < region.size[0]; ++i)
+          {
+            const size_t c = static_cast<size_t>(row + blockOf[0][i]);
+            ++total[c];
+            inside[c] += voxel[i];
+          }
+        }
+    },
+    split);
   for (size_t c = 0; c < inside.size(); ++c)
     coarse.voxels[c] = 4 * inside[c] > 3 * total[c] ? 1 : 0;
   FillHoles(coarse);
@@ -101,13 +120,18 @@ MaskGrid LumenCore(const CtImage& ct, const MaskGrid& region, const IndexBox& bo
   if (nearest < 0)
     return core;
   const MaskGrid piece = ConnectedComponent(deep, nearest);
-  for (long k = 0; k < region.size[2]; ++k)
-    for (long j = 0; j < region.size[1]; ++j)
-      for (long i = 0; i < region.size[0]; ++i)
-      {
-        const long f = region.Flat(i, j, k);
-        core.voxels[f] = region.voxels[f] && piece.voxels[piece.Flat(blockOf(0, i), blockOf(1, j), blockOf(2, k))];
-      }
+  OnTwoCores(region.size[2],
+             [&](long first, long end)
+             {
+               for (long k = first; k < end; ++k)
+                 for (long j = 0; j < region.size[1]; ++j)
+                 {
+                   const std::uint8_t* inPiece = &piece.voxels[piece.Flat(0, blockOf[1][j], blockOf[2][k])];
+                   const long f = region.Flat(0, j, k);
+                   for (long i = 0; i < region.size[0]; ++i)
+                     core.voxels[f + i] = region.voxels[f + i] && inPiece[blockOf[0][i]];
+                 }
+             });
   return core;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <future>
 
 #include <Eigen/Dense>
 
@@ -64,15 +65,24 @@ VesselWall TraceVesselWall(const CtImage& ct,
     const Centerline axis = OuterWallAxis(first, vessel.name, params.axisHalfWindowMm);
     return axis.Size() >= 2 ? SegmentOuterWall(ct, lumen, vessel, from, to, outer, &axis) : first;
   };
+  // The three vessels are traced independently: the iliacs on another thread beside the aorta
+  // (the pipeline runs this stage beside the stent fit; the fit ends first, and its core takes them).
+  std::future<void> iliacsTraced =
+    std::async(std::launch::async,
+               [&]
+               {
+                 const Centerline* iliacs[2] = { &tree.rightIliac, &tree.leftIliac };
+                 for (int side = 0; side < 2; ++side)
+                   if (iliacs[side]->Size() >= 2)
+                   {
+                     const double origin = InternalIliacOriginAbscissa(tree, side);
+                     wall.vessels[1 + side] =
+                       trace(*iliacs[side], 0.0, std::isfinite(origin) ? origin : iliacs[side]->LengthMm());
+                   }
+               });
   wall.vessels[0] =
     trace(tree.aorta, siteAbscissaMm - params.aboveSiteMm, std::min(bifurcation, tree.aorta.LengthMm()));
-  const Centerline* iliacs[2] = { &tree.rightIliac, &tree.leftIliac };
-  for (int side = 0; side < 2; ++side)
-    if (iliacs[side]->Size() >= 2)
-    {
-      const double origin = InternalIliacOriginAbscissa(tree, side);
-      wall.vessels[1 + side] = trace(*iliacs[side], 0.0, std::isfinite(origin) ? origin : iliacs[side]->LengthMm());
-    }
+  iliacsTraced.get();
   if (params.wallThicknessMm >= 0.0)
     wall.wallThicknessMm = params.wallThicknessMm;
   else

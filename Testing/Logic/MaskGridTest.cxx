@@ -92,57 +92,71 @@ TEST(MaskGrid, FillHoles_EqualsBorderConnectedBackgroundOnRandomMasks)
   std::mt19937 random(20261201);
   const std::array<long, 3> boxes[] = { { 13, 11, 9 }, { 1, 12, 10 }, { 12, 1, 10 }, { 12, 10, 1 }, { 2, 2, 30 } };
   long cavities = 0;
-  for (const auto& box : boxes)
-    for (const double density : { 0.2, 0.5, 0.65, 0.8 })
-    {
-      MaskGrid mask(box);
-      std::bernoulli_distribution foreground(density);
-      for (auto& v : mask.voxels)
-        v = foreground(random) ? 1 : 0;
-      // Reference: breadth-first from every border background voxel.
-      std::vector<char> outside(static_cast<std::size_t>(mask.Count()), 0);
-      std::vector<long> queue;
-      for (long flat = 0; flat < mask.Count(); ++flat)
+  // Each draw also confined to part of a larger box (FillHoles floods only the foreground's box
+  // grown by a voxel): background margins of 0–3 voxels on each side, so the foreground touches
+  // some faces of the box and not others.
+  std::uniform_int_distribution<long> margin(0, 3);
+  for (const auto& drawn : boxes)
+    for (const bool confined : { false, true })
+      for (const double density : { 0.2, 0.5, 0.65, 0.8 })
       {
-        const auto ijk = mask.Ijk(flat);
-        bool border = false;
-        for (unsigned a = 0; a < 3; ++a)
-          border = border || ijk[a] == 0 || ijk[a] == box[a] - 1;
-        if (border && !mask.voxels[flat])
+        std::array<long, 3> low{}, box = drawn;
+        if (confined)
+          for (unsigned a = 0; a < 3; ++a)
+          {
+            low[a] = margin(random);
+            box[a] = drawn[a] + low[a] + margin(random);
+          }
+        MaskGrid mask(box);
+        std::bernoulli_distribution foreground(density);
+        for (long k = 0; k < drawn[2]; ++k)
+          for (long j = 0; j < drawn[1]; ++j)
+            for (long i = 0; i < drawn[0]; ++i)
+              mask.voxels[mask.Flat(low[0] + i, low[1] + j, low[2] + k)] = foreground(random) ? 1 : 0;
+        // Reference: breadth-first from every border background voxel.
+        std::vector<char> outside(static_cast<std::size_t>(mask.Count()), 0);
+        std::vector<long> queue;
+        for (long flat = 0; flat < mask.Count(); ++flat)
         {
-          outside[flat] = 1;
-          queue.push_back(flat);
+          const auto ijk = mask.Ijk(flat);
+          bool border = false;
+          for (unsigned a = 0; a < 3; ++a)
+            border = border || ijk[a] == 0 || ijk[a] == box[a] - 1;
+          if (border && !mask.voxels[flat])
+          {
+            outside[flat] = 1;
+            queue.push_back(flat);
+          }
+        }
+        for (std::size_t head = 0; head < queue.size(); ++head)
+        {
+          const auto ijk = mask.Ijk(queue[head]);
+          for (unsigned a = 0; a < 3; ++a)
+            for (const long d : { -1L, 1L })
+            {
+              auto n = ijk;
+              n[a] += d;
+              if (n[a] < 0 || n[a] >= box[a])
+                continue;
+              const long flat = mask.Flat(n[0], n[1], n[2]);
+              if (!mask.voxels[flat] && !outside[flat])
+              {
+                outside[flat] = 1;
+                queue.push_back(flat);
+              }
+            }
+        }
+        MaskGrid filled = mask;
+        FillHoles(filled);
+        for (long flat = 0; flat < mask.Count(); ++flat)
+        {
+          const int expected = (mask.voxels[flat] || !outside[flat]) ? 1 : 0;
+          ASSERT_EQ(filled.voxels[flat], expected) << "voxel " << flat << " of a " << box[0] << "x" << box[1] << "x"
+                                                   << box[2] << " box at density " << density;
+          cavities += expected && !mask.voxels[flat];
         }
       }
-      for (std::size_t head = 0; head < queue.size(); ++head)
-      {
-        const auto ijk = mask.Ijk(queue[head]);
-        for (unsigned a = 0; a < 3; ++a)
-          for (const long d : { -1L, 1L })
-          {
-            auto n = ijk;
-            n[a] += d;
-            if (n[a] < 0 || n[a] >= box[a])
-              continue;
-            const long flat = mask.Flat(n[0], n[1], n[2]);
-            if (!mask.voxels[flat] && !outside[flat])
-            {
-              outside[flat] = 1;
-              queue.push_back(flat);
-            }
-          }
-      }
-      MaskGrid filled = mask;
-      FillHoles(filled);
-      for (long flat = 0; flat < mask.Count(); ++flat)
-      {
-        const int expected = (mask.voxels[flat] || !outside[flat]) ? 1 : 0;
-        ASSERT_EQ(filled.voxels[flat], expected)
-          << "voxel " << flat << " of a " << box[0] << "x" << box[1] << "x" << box[2] << " box at density " << density;
-        cavities += expected && !mask.voxels[flat];
-      }
-    }
-  EXPECT_GT(cavities, 50); // the draws hold enough enclosed background for the comparison to mean something
+  EXPECT_GT(cavities, 100); // the draws hold enough enclosed background for the comparison to mean something
 }
 
 // Pits at the box's faces count only the neighbours inside the box.
@@ -171,8 +185,8 @@ TEST(MaskGrid, GrowConstrained_StopsAfterStepsAndAtRejectedVoxels)
 {
   MaskGrid line({ 10, 1, 1 });
   line.voxels[0] = 1;
-  std::vector<bool> accept(10, true);
-  accept[6] = false;
+  std::vector<std::uint8_t> accept(10, 1);
+  accept[6] = 0;
   MaskGrid two = line;
   GrowConstrained(two, accept, 2);
   EXPECT_EQ(two.CountForeground(), 3);
