@@ -66,7 +66,8 @@ VesselWall TraceVesselWall(const CtImage& ct,
     return axis.Size() >= 2 ? SegmentOuterWall(ct, lumen, vessel, from, to, outer, &axis) : first;
   };
   // The three vessels are traced independently: the iliacs on another thread beside the aorta
-  // (the pipeline runs this stage beside the stent fit; the fit ends first, and its core takes them).
+  // (in the pipeline this stage runs beside the stent fit, which usually ends first; its core then
+  // takes the iliacs). Each trace reads the CT, the lumen and its centerline only.
   std::future<void> iliacsTraced =
     std::async(std::launch::async,
                [&]
