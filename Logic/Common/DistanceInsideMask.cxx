@@ -14,6 +14,9 @@ namespace
 
 const double Infinite = std::numeric_limits<double>::infinity();
 
+/// Boxes of fewer voxels are transformed on the calling thread alone.
+constexpr long minimumVoxelsForTwoCores = 65536;
+
 /// One line of the separable transform: the lower envelope of the parabolas
 /// (p − q)²·s² + f(q) over the line's samples q with finite f (Felzenszwalb & Huttenlocher 2012,
 /// section 3), plus — when the box's outside is background — a site at q = −1 and q = n with
@@ -99,86 +102,100 @@ DistanceField DistanceInsideMask(const MaskGrid& mask,
   const std::array<long, 3> n{ mask.size[0], mask.size[1], mask.size[2] };
   const long count = mask.Count();
   DistanceField field;
-  field.nearestBackground.assign(std::size_t(count), { 0, 0, 0 });
-  std::vector<std::array<int, 3>>& site = field.nearestBackground;
+  field.nearestBackground.resize(std::size_t(count)); // unwritten until the first loop (DefaultInitAllocator)
+  auto& site = field.nearestBackground;
   // Squared distances (mm²) until the last step; float is exact enough: at 100 mm, 0.001 mm.
-  std::vector<float>& squared = field.distanceMm;
-  squared.assign(std::size_t(count), std::numeric_limits<float>::infinity());
+  auto& squared = field.distanceMm;
+  squared.resize(std::size_t(count));
   const long slice = n[0] * n[1];
+  // Small boxes (the thinning's one-voxel layers, the tests') on the calling thread alone: starting
+  // threads would cost more than the loops.
+  const auto split = [&](long slices, auto body)
+  {
+    if (count >= minimumVoxelsForTwoCores)
+      OnTwoCores(slices, body);
+    else
+      body(0L, slices);
+  };
   // Every loop below on both cores: the first two over slices, each pass over its lines (a line
   // reads and writes its own voxels only), so the field is the same as one core's, bit for bit.
-  OnTwoCores(n[2],
-             [&](long firstSlice, long endSlice)
-             {
-               for (long flat = firstSlice * slice; flat < endSlice * slice; ++flat)
-                 if (!mask.voxels[flat])
-                 {
-                   const auto ijk = mask.Ijk(flat);
-                   squared[std::size_t(flat)] = 0.0f;
-                   site[std::size_t(flat)] = { int(ijk[0]), int(ijk[1]), int(ijk[2]) };
-                 }
-             });
+  split(n[2],
+        [&](long firstSlice, long endSlice)
+        {
+          for (long flat = firstSlice * slice; flat < endSlice * slice; ++flat)
+            if (!mask.voxels[flat])
+            {
+              const auto ijk = mask.Ijk(flat);
+              squared[std::size_t(flat)] = 0.0f;
+              site[std::size_t(flat)] = { int(ijk[0]), int(ijk[1]), int(ijk[2]) };
+            }
+            else
+            {
+              squared[std::size_t(flat)] = std::numeric_limits<float>::infinity();
+              site[std::size_t(flat)] = { 0, 0, 0 }; // stays so when the voxel has no site at all
+            }
+        });
   const std::array<long, 3> stride{ 1, n[0], n[0] * n[1] };
   for (int axis = 0; axis < 3; ++axis)
   {
     // The two axes that index the lines, u the faster: neighbouring lines share cache lines.
     const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
     const long length = n[axis];
-    OnTwoCores(n[v],
-               [&](long firstB, long endB)
-               {
-                 LineTransform transform;
-                 std::vector<double> f(static_cast<std::size_t>(length)), best;
-                 std::vector<long> from;
-                 std::vector<std::array<int, 3>> lineSites(static_cast<std::size_t>(length));
-                 for (long b = firstB; b < endB; ++b)
-                   for (long a = 0; a < n[u]; ++a)
-                   {
-                     const long start = a * stride[u] + b * stride[v];
-                     // A line of background only (distance 0 throughout) stays as it is: most lines of a
-                     // lumen's bounding box.
-                     bool foreground = false;
-                     for (long q = 0; q < length && !foreground; ++q)
-                       foreground = mask.voxels[start + q * stride[axis]] != 0;
-                     if (!foreground)
-                       continue;
-                     for (long q = 0; q < length; ++q)
-                     {
-                       f[std::size_t(q)] = squared[std::size_t(start + q * stride[axis])];
-                       lineSites[std::size_t(q)] = site[std::size_t(start + q * stride[axis])];
-                     }
-                     transform.Run(f, spacingMm[axis], outsideIsBackground, best, from);
-                     for (long p = 0; p < length; ++p)
-                     {
-                       const long flat = start + p * stride[axis];
-                       squared[std::size_t(flat)] = static_cast<float>(best[std::size_t(p)]);
-                       const long q = from[std::size_t(p)];
-                       if (q == -2)
-                         continue;
-                       if (q < 0 || q >= length)
-                       {
-                         // The virtual site in the shell: straight across this axis from the voxel itself.
-                         std::array<int, 3> s{};
-                         s[std::size_t(axis)] = int(q);
-                         s[std::size_t(u)] = int(a);
-                         s[std::size_t(v)] = int(b);
-                         site[std::size_t(flat)] = s;
-                       }
-                       else
-                       {
-                         site[std::size_t(flat)] = lineSites[std::size_t(q)];
-                       }
-                     }
-                   }
-               });
+    split(n[v],
+          [&](long firstB, long endB)
+          {
+            LineTransform transform;
+            std::vector<double> f(static_cast<std::size_t>(length)), best;
+            std::vector<long> from;
+            std::vector<std::array<int, 3>> lineSites(static_cast<std::size_t>(length));
+            for (long b = firstB; b < endB; ++b)
+              for (long a = 0; a < n[u]; ++a)
+              {
+                const long start = a * stride[u] + b * stride[v];
+                // A line of background only (distance 0 throughout) stays as it is: most lines of a
+                // lumen's bounding box.
+                bool foreground = false;
+                for (long q = 0; q < length && !foreground; ++q)
+                  foreground = mask.voxels[start + q * stride[axis]] != 0;
+                if (!foreground)
+                  continue;
+                for (long q = 0; q < length; ++q)
+                {
+                  f[std::size_t(q)] = squared[std::size_t(start + q * stride[axis])];
+                  lineSites[std::size_t(q)] = site[std::size_t(start + q * stride[axis])];
+                }
+                transform.Run(f, spacingMm[axis], outsideIsBackground, best, from);
+                for (long p = 0; p < length; ++p)
+                {
+                  const long flat = start + p * stride[axis];
+                  squared[std::size_t(flat)] = static_cast<float>(best[std::size_t(p)]);
+                  const long q = from[std::size_t(p)];
+                  if (q == -2)
+                    continue;
+                  if (q < 0 || q >= length)
+                  {
+                    // The virtual site in the shell: straight across this axis from the voxel itself.
+                    std::array<int, 3> s{};
+                    s[std::size_t(axis)] = int(q);
+                    s[std::size_t(u)] = int(a);
+                    s[std::size_t(v)] = int(b);
+                    site[std::size_t(flat)] = s;
+                  }
+                  else
+                  {
+                    site[std::size_t(flat)] = lineSites[std::size_t(q)];
+                  }
+                }
+              }
+          });
   }
-  OnTwoCores(n[2],
-             [&](long firstSlice, long endSlice)
-             {
-               // No site at all: infinity, hence the maximum.
-               for (long flat = firstSlice * slice; flat < endSlice * slice; ++flat)
-                 squared[std::size_t(flat)] = std::min(std::sqrt(squared[std::size_t(flat)]), maximumDistanceMm);
-             });
+  split(n[2],
+        [&](long firstSlice, long endSlice)
+        {
+          // No site at all: infinity, hence the maximum.
+          for (long flat = firstSlice * slice; flat < endSlice * slice; ++flat)
+            squared[std::size_t(flat)] = std::min(std::sqrt(squared[std::size_t(flat)]), maximumDistanceMm);
+        });
   return field;
 }
 

@@ -15,6 +15,9 @@
 #pragma once
 
 #include <array>
+#include <memory>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "Common/MaskGrid.h"
@@ -22,10 +25,38 @@
 namespace sgp
 {
 
+/// An allocator that leaves new elements default-initialised (for these types: unwritten) instead of
+/// zeroing them, so that a field's buffers are first written by the transform's own first loop, on
+/// both cores, rather than zero-filled on one beforehand (a sixth of the thinning's time).
+template<typename T>
+struct DefaultInitAllocator : std::allocator<T>
+{
+  template<typename U>
+  struct rebind
+  {
+    using other = DefaultInitAllocator<U>;
+  };
+  DefaultInitAllocator() = default;
+  template<typename U>
+  DefaultInitAllocator(const DefaultInitAllocator<U>&) noexcept
+  {
+  }
+  template<typename U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>)
+  {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template<typename U, typename... Args>
+  void construct(U* p, Args&&... args)
+  {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
 struct DistanceField
 {
-  std::vector<float> distanceMm;
-  std::vector<std::array<int, 3>> nearestBackground;
+  std::vector<float, DefaultInitAllocator<float>> distanceMm;
+  std::vector<std::array<int, 3>, DefaultInitAllocator<std::array<int, 3>>> nearestBackground;
 };
 
 /// \param outsideIsBackground  whether voxels outside the box count as background (sites)

@@ -5,9 +5,11 @@
 /// results are then the same as one loop's, bit for bit. `split` (default: half) is where the
 /// second half begins, for loops whose slices share an output cell with their neighbours (give a
 /// boundary between cells). An exception from either half is rethrown once both have finished.
+/// Where no thread can be started, both halves run on the calling thread.
 #pragma once
 
 #include <future>
+#include <system_error>
 
 namespace sgp
 {
@@ -21,7 +23,17 @@ void OnTwoCores(long count, Body body, long split = -1)
     body(0L, count);
     return;
   }
-  std::future<void> first = std::async(std::launch::async, [&body, half] { body(0L, half); });
+  std::future<void> first;
+  try
+  {
+    first = std::async(std::launch::async, [&body, half] { body(0L, half); });
+  }
+  catch (const std::system_error&)
+  {
+    body(0L, half); // no thread to spare: both halves here, one after the other
+    body(half, count);
+    return;
+  }
   body(half, count); // should it throw, `first` is waited for as it goes out of scope
   first.get();
 }

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string_view>
+#include <system_error>
 #include <thread>
 
 #include <fcntl.h>
@@ -62,17 +63,24 @@ private:
   std::size_t m_Size = 0;
 };
 
-std::string Trimmed(std::string_view text)
+/// `text` without leading and trailing blanks, in lower case (NRRD's field names and the values read
+/// here are matched without regard to case, as ITK's NrrdIO matches them).
+std::string Normalised(std::string_view text)
 {
   const auto first = text.find_first_not_of(" \t");
   if (first == std::string_view::npos)
     return {};
   const auto last = text.find_last_not_of(" \t");
-  return std::string(text.substr(first, last - first + 1));
+  std::string out(text.substr(first, last - first + 1));
+  for (char& c : out)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
 }
 
 /// The data's offset when the header (up to its blank line) declares attached, gzip-encoded,
-/// 16-bit signed data in the machine's byte order with no skips; 0 otherwise.
+/// 16-bit signed data in the machine's byte order with no skips; 0 otherwise. A line is a field
+/// when it has ": " (whatever else it holds, as for NrrdIO); a line without it is a comment, a
+/// key:=value pair, or a header this path declines.
 std::size_t GzipShortDataOffset(std::string_view file)
 {
   const std::size_t end = file.find("\n\n");
@@ -87,12 +95,16 @@ std::size_t GzipShortDataOffset(std::string_view file)
     const std::size_t next = header.find('\n', line);
     const std::string_view text = header.substr(line, next - line);
     line = next + 1;
-    if (text.empty() || text[0] == '#' || text.find(":=") != std::string_view::npos)
-      continue; // comments and key/value pairs
+    if (text.empty() || text[0] == '#')
+      continue;
     const std::size_t colon = text.find(": ");
     if (colon == std::string_view::npos)
+    {
+      if (text.find(":=") != std::string_view::npos)
+        continue; // a key:=value pair
       return 0;
-    const std::string field = Trimmed(text.substr(0, colon)), value = Trimmed(text.substr(colon + 2));
+    }
+    const std::string field = Normalised(text.substr(0, colon)), value = Normalised(text.substr(colon + 2));
     if (field == "encoding")
       gzip = value == "gzip" || value == "gz";
     else if (field == "type")
@@ -127,7 +139,14 @@ bool InflateGzipNrrdInto(const std::string& path, CtImage& image)
   const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(out) + page - 1) / page * page;
   const std::uintptr_t last = (reinterpret_cast<std::uintptr_t>(out) + bytes) / page * page;
   if (last > first + 64 * page)
-    mapPages = std::thread([=] { ::madvise(reinterpret_cast<void*>(first), last - first, MADV_POPULATE_WRITE); });
+    try
+    {
+      mapPages = std::thread([=] { ::madvise(reinterpret_cast<void*>(first), last - first, MADV_POPULATE_WRITE); });
+    }
+    catch (const std::system_error&)
+    {
+      // No thread to spare: the pages fault as they are written.
+    }
 #endif
   libdeflate_decompressor* inflater = libdeflate_alloc_decompressor();
   std::size_t used = 0, written = 0;

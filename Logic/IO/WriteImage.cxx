@@ -1,5 +1,7 @@
 #include "IO/WriteImage.h"
 
+#include <mutex>
+
 #include <itkImageFileWriter.h>
 
 #include "Common/Errors.h"
@@ -10,6 +12,10 @@ namespace sgp
 namespace
 {
 
+/// One image written at a time, whatever its type: a front end writes label maps on another thread
+/// while the rest is written, and ITK's NRRD library keeps its error messages in one unguarded store.
+std::mutex oneImageAtATime;
+
 template<typename Image>
 void Write(const Image& image, const std::string& path)
 {
@@ -19,6 +25,7 @@ void Write(const Image& image, const std::string& path)
     writer->SetInput(&image);
     writer->SetFileName(path);
     writer->SetUseCompression(true);
+    const std::lock_guard<std::mutex> lock(oneImageAtATime);
     writer->Update();
   }
   catch (const itk::ExceptionObject& e)

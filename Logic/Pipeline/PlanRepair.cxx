@@ -78,8 +78,6 @@ void SegmentLumen(const CtImage& ct,
 {
   report.Begin("SegmentLumen", "Segmenting the aortic lumen by region growing");
   plan.lumen = GrowLumenRegion(ct, seedLps, params.growing, report.Callback());
-  for (const std::string& w : plan.lumen.warnings)
-    report.Warn(w);
 }
 
 /// A post-EVAR scan: its graft's struts break the lumen, and the plan would fail later with a wrong
@@ -560,6 +558,8 @@ RepairPlan PlanRepair(CtImage::ConstPointer ct,
     NoEndograft(metal.get());
   }
   ct = nullptr;
+  for (const std::string& w : plan.lumen.warnings) // a post-EVAR scan gets its error alone
+    report.Warn(w);
   report.LumenReady(plan.lumen);
   plan.reached = PlanStage::Segmentation;
   if (request.through < PlanStage::Centerlines)

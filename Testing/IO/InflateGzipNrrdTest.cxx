@@ -150,9 +150,14 @@ TEST_F(InflateGzipNrrdTest, OtherFiles_DeclinedAndReadByItk)
   using FloatImage = itk::Image<float, 3>;
   Write(MakeVolume<FloatImage>().GetPointer(), folder / "float.nrrd", true);
   Write(MakeVolume().GetPointer(), folder / "detached.nhdr", true);
-  // Header fields the fast path does not honour.
+  // Header fields the fast path does not honour, in any case (NrrdIO matches field names without
+  // regard to case), and a field whose value holds ":=" (a field still, for NrrdIO).
   const fs::path skip = EditedHeader("skip.nrrd", "", "byte skip: 2\n");
   const fs::path lines = EditedHeader("lines.nrrd", "", "line skip: 1\n");
+  const fs::path upperSkip = EditedHeader("upper-skip.nrrd", "", "Byte Skip: 2\n");
+  fs::copy_file(folder / "detached.raw.gz", folder / "detached:=copy.raw.gz");
+  const fs::path upperDataFile = EditedHeader("upper-data-file.nrrd", "", "DATA FILE: detached.raw.gz\n");
+  const fs::path keyValueLike = EditedHeader("key-value-like.nrrd", "", "data file: detached:=copy.raw.gz\n");
   const fs::path big = EditedHeader("big.nrrd", "endian: little", "endian: big");
   const fs::path crlf = folder / "crlf.nrrd";
   {
@@ -163,8 +168,8 @@ TEST_F(InflateGzipNrrdTest, OtherFiles_DeclinedAndReadByItk)
       converted += c == '\n' ? std::string("\r\n") : std::string(1, c);
     WriteBytes(crlf, converted + bytes.substr(end + 2));
   }
-  for (const fs::path& path :
-       { folder / "raw.nrrd", folder / "float.nrrd", folder / "detached.nhdr", skip, lines, big, crlf })
+  for (const fs::path& path : { folder / "raw.nrrd", folder / "float.nrrd", folder / "detached.nhdr", skip, lines,
+                                 upperSkip, upperDataFile, keyValueLike, big, crlf })
   {
     SCOPED_TRACE(path.filename().string());
     bool read = true;
