@@ -28,12 +28,14 @@ IndexBox PaddedBox(const std::array<long, 3>& lo,
                    const std::array<long, 3>& pad,
                    const itk::Size<3>& size);
 
-/// Calls f(flatInBox, flatInImage) for every voxel of `box` (which lies inside the image).
+/// Calls f(flatInBox, flatInImage) for every voxel of `box` (which lies inside the image) in its
+/// slices [firstSlice, endSlice) (k counted from the box's first); flatInBox counts from the box's
+/// first voxel, so two calls on disjoint slices (two threads) write disjoint outputs.
 template<typename Function>
-void ForEachInBox(const IndexBox& box, const itk::Size<3>& imageSize, Function f)
+void ForEachInBoxSlices(const IndexBox& box, const itk::Size<3>& imageSize, long firstSlice, long endSlice, Function f)
 {
-  long flat = 0;
-  for (long k = 0; k < box.size[2]; ++k)
+  long flat = firstSlice * box.size[0] * box.size[1];
+  for (long k = firstSlice; k < endSlice; ++k)
   {
     for (long j = 0; j < box.size[1]; ++j)
     {
@@ -44,6 +46,13 @@ void ForEachInBox(const IndexBox& box, const itk::Size<3>& imageSize, Function f
       }
     }
   }
+}
+
+/// Calls f(flatInBox, flatInImage) for every voxel of `box` (which lies inside the image).
+template<typename Function>
+void ForEachInBox(const IndexBox& box, const itk::Size<3>& imageSize, Function f)
+{
+  ForEachInBoxSlices(box, imageSize, 0, box.size[2], f);
 }
 
 } // namespace sgp

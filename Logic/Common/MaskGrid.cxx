@@ -227,60 +227,7 @@ std::vector<int> LabelComponents(const MaskGrid& mask, std::vector<long>& sizes)
 namespace
 {
 
-/// FillHoles on the whole box (below).
-void FillHolesInBox(MaskGrid& mask);
-
-} // namespace
-
-void FillHoles(MaskGrid& mask)
-{
-  // Only the foreground's bounding box grown by a voxel needs the flood: a background voxel
-  // outside the foreground's box reaches the border in a straight line away from it, and a path
-  // from inside to the border crosses the grown box's surface, every background voxel of which
-  // is such a voxel or on the border itself. Same result, on the lumen's crop a third fewer voxels.
-  std::array<long, 3> low{ mask.size[0], mask.size[1], mask.size[2] }, high{ -1, -1, -1 };
-  for (long k = 0; k < mask.size[2]; ++k)
-    for (long j = 0; j < mask.size[1]; ++j)
-    {
-      const std::uint8_t* row = &mask.voxels[static_cast<std::size_t>(mask.Flat(0, j, k))];
-      const std::uint8_t* end = row + mask.size[0];
-      const std::uint8_t* first = std::find(row, end, std::uint8_t{ 1 });
-      if (first == end)
-        continue;
-      const std::uint8_t* last = end - 1;
-      while (!*last)
-        --last;
-      low = { std::min(low[0], long(first - row)), std::min(low[1], j), std::min(low[2], k) };
-      high = { std::max(high[0], long(last - row)), std::max(high[1], j), std::max(high[2], k) };
-    }
-  if (high[0] < 0)
-    return; // no foreground: no holes
-  std::array<long, 3> first{}, size{};
-  for (unsigned a = 0; a < 3; ++a)
-  {
-    first[a] = std::max(0L, low[a] - 1);
-    size[a] = std::min(mask.size[a] - 1, high[a] + 1) - first[a] + 1;
-  }
-  if (size == mask.size)
-  {
-    FillHolesInBox(mask);
-    return;
-  }
-  MaskGrid inner(size);
-  for (long k = 0; k < size[2]; ++k)
-    for (long j = 0; j < size[1]; ++j)
-      std::copy_n(&mask.voxels[static_cast<std::size_t>(mask.Flat(first[0], first[1] + j, first[2] + k))], size[0],
-                  &inner.voxels[static_cast<std::size_t>(inner.Flat(0, j, k))]);
-  FillHolesInBox(inner);
-  for (long k = 0; k < size[2]; ++k)
-    for (long j = 0; j < size[1]; ++j)
-      std::copy_n(&inner.voxels[static_cast<std::size_t>(inner.Flat(0, j, k))], size[0],
-                  &mask.voxels[static_cast<std::size_t>(mask.Flat(first[0], first[1] + j, first[2] + k))]);
-}
-
-namespace
-{
-
+/// FillHoles on the whole box.
 void FillHolesInBox(MaskGrid& mask)
 {
   // Flood the outside from a one-voxel shell of background around the box (so the outside is one
@@ -345,6 +292,52 @@ void FillHolesInBox(MaskGrid& mask)
 }
 
 } // namespace
+
+void FillHoles(MaskGrid& mask)
+{
+  // Only the foreground's bounding box grown by a voxel needs the flood: a background voxel
+  // outside the foreground's box reaches the border in a straight line away from it, and a path
+  // from inside to the border crosses the grown box's surface, every background voxel of which
+  // is such a voxel or on the border itself. Same result, on the lumen's crop a third fewer voxels.
+  std::array<long, 3> low{ mask.size[0], mask.size[1], mask.size[2] }, high{ -1, -1, -1 };
+  for (long k = 0; k < mask.size[2]; ++k)
+    for (long j = 0; j < mask.size[1]; ++j)
+    {
+      const std::uint8_t* row = &mask.voxels[static_cast<std::size_t>(mask.Flat(0, j, k))];
+      const std::uint8_t* end = row + mask.size[0];
+      const std::uint8_t* first = std::find(row, end, std::uint8_t{ 1 });
+      if (first == end)
+        continue;
+      const std::uint8_t* last = end - 1;
+      while (!*last)
+        --last;
+      low = { std::min(low[0], long(first - row)), std::min(low[1], j), std::min(low[2], k) };
+      high = { std::max(high[0], long(last - row)), std::max(high[1], j), std::max(high[2], k) };
+    }
+  if (high[0] < 0)
+    return; // no foreground: no holes
+  std::array<long, 3> first{}, size{};
+  for (unsigned a = 0; a < 3; ++a)
+  {
+    first[a] = std::max(0L, low[a] - 1);
+    size[a] = std::min(mask.size[a] - 1, high[a] + 1) - first[a] + 1;
+  }
+  if (size == mask.size)
+  {
+    FillHolesInBox(mask);
+    return;
+  }
+  MaskGrid inner(size);
+  for (long k = 0; k < size[2]; ++k)
+    for (long j = 0; j < size[1]; ++j)
+      std::copy_n(&mask.voxels[static_cast<std::size_t>(mask.Flat(first[0], first[1] + j, first[2] + k))], size[0],
+                  &inner.voxels[static_cast<std::size_t>(inner.Flat(0, j, k))]);
+  FillHolesInBox(inner);
+  for (long k = 0; k < size[2]; ++k)
+    for (long j = 0; j < size[1]; ++j)
+      std::copy_n(&inner.voxels[static_cast<std::size_t>(inner.Flat(0, j, k))], size[0],
+                  &mask.voxels[static_cast<std::size_t>(mask.Flat(first[0], first[1] + j, first[2] + k))]);
+}
 
 void FillSurfacePits(MaskGrid& mask, int minimumFaceNeighbours)
 {

@@ -136,20 +136,16 @@ LabelImage::Pointer PasteOnGrid(const CtImage& ct, const MaskGrid& lumen, const 
   // The grid's pages are first touched here, slice by slice on both cores: zeroed, then the box's
   // voxels pasted.
   const itk::Size<3> size = ct.GetLargestPossibleRegion().GetSize();
-  const long slice = long(size[0]) * long(size[1]), boxSlice = box.size[0] * box.size[1];
+  const long slice = long(size[0]) * long(size[1]);
   OnTwoCores(long(size[2]),
              [&](long first, long end)
              {
                LabelImage::PixelType* voxels = mask->GetBufferPointer();
                std::fill(voxels + first * slice, voxels + end * slice, LabelImage::PixelType(0));
-               const long from = std::max(first, box.first[2]), to = std::min(end, box.first[2] + box.size[2]);
-               if (from >= to)
-                 return;
-               IndexBox part = box;
-               part.first[2] = from;
-               part.size[2] = to - from;
-               const long offset = (from - box.first[2]) * boxSlice;
-               ForEachInBox(part, size, [&](long flat, long image) { voxels[image] = lumen.voxels[offset + flat]; });
+               // The box's slices among these (k counted from the box's first).
+               const long from = std::max(first - box.first[2], 0L), to = std::min(end - box.first[2], box.size[2]);
+               ForEachInBoxSlices(box, size, from, to,
+                                  [&](long flat, long image) { voxels[image] = lumen.voxels[flat]; });
              });
   return mask;
 }

@@ -102,20 +102,15 @@ CroppedRegion CropToRegion(const CtImage& ct, const VoxelBits& inRegion, const I
   crop.box = box;
   crop.region = MaskGrid(crop.box.size);
   crop.hu.resize(static_cast<std::size_t>(crop.region.Count()));
-  const long slice = crop.box.size[0] * crop.box.size[1];
   OnTwoCores(crop.box.size[2],
              [&](long first, long end)
              {
-               IndexBox part = crop.box;
-               part.first[2] += first;
-               part.size[2] = end - first;
-               const long offset = first * slice;
-               ForEachInBox(part, ct.GetLargestPossibleRegion().GetSize(),
-                            [&](long flat, long image)
-                            {
-                              crop.region.voxels[offset + flat] = inRegion.Test(image) ? 1 : 0;
-                              crop.hu[offset + flat] = ct.GetBufferPointer()[image];
-                            });
+               ForEachInBoxSlices(crop.box, ct.GetLargestPossibleRegion().GetSize(), first, end,
+                                  [&](long flat, long image)
+                                  {
+                                    crop.region.voxels[flat] = inRegion.Test(image) ? 1 : 0;
+                                    crop.hu[flat] = ct.GetBufferPointer()[image];
+                                  });
              });
   return crop;
 }
