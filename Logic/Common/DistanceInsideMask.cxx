@@ -122,18 +122,20 @@ DistanceField DistanceInsideMask(const MaskGrid& mask,
   split(n[2],
         [&](long firstSlice, long endSlice)
         {
-          for (long flat = firstSlice * slice; flat < endSlice * slice; ++flat)
-            if (!mask.voxels[flat])
-            {
-              const auto ijk = mask.Ijk(flat);
-              squared[std::size_t(flat)] = 0.0f;
-              site[std::size_t(flat)] = { int(ijk[0]), int(ijk[1]), int(ijk[2]) };
-            }
-            else
-            {
-              squared[std::size_t(flat)] = std::numeric_limits<float>::infinity();
-              site[std::size_t(flat)] = { 0, 0, 0 }; // stays so when the voxel has no site at all
-            }
+          long flat = firstSlice * slice;
+          for (int k = int(firstSlice); k < int(endSlice); ++k)
+            for (int j = 0; j < int(n[1]); ++j)
+              for (int i = 0; i < int(n[0]); ++i, ++flat)
+                if (!mask.voxels[flat])
+                {
+                  squared[std::size_t(flat)] = 0.0f;
+                  site[std::size_t(flat)] = { i, j, k };
+                }
+                else
+                {
+                  squared[std::size_t(flat)] = std::numeric_limits<float>::infinity();
+                  site[std::size_t(flat)] = { 0, 0, 0 }; // stays so when the voxel has no site at all
+                }
         });
   const std::array<long, 3> stride{ 1, n[0], n[0] * n[1] };
   for (int axis = 0; axis < 3; ++axis)

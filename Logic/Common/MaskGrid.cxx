@@ -74,13 +74,6 @@ MaskGrid::MaskGrid(const std::array<long, 3>& boxSize)
 {
 }
 
-std::array<long, 3> MaskGrid::Ijk(long flat) const
-{
-  const long i = flat % size[0];
-  const long jk = flat / size[0];
-  return { i, jk % size[1], jk / size[1] };
-}
-
 long MaskGrid::CountForeground() const
 {
   return static_cast<long>(std::count(voxels.begin(), voxels.end(), std::uint8_t{ 1 }));

@@ -28,7 +28,11 @@ struct MaskGrid
   long Count() const { return size[0] * size[1] * size[2]; }
   long Flat(long i, long j, long k) const { return i + size[0] * (j + size[1] * k); }
   /// Inverse of Flat.
-  std::array<long, 3> Ijk(long flat) const;
+  std::array<long, 3> Ijk(long flat) const
+  {
+    const long jk = flat / size[0];
+    return { flat % size[0], jk % size[1], jk / size[1] };
+  }
   /// Number of foreground voxels.
   long CountForeground() const;
 };

@@ -408,12 +408,12 @@ OuterWall SegmentOuterWall(const CtImage& ct,
     // A wall thinner than the blur never shows its plateau (the sample beyond the lumen's edge
     // already mixes in fat): the layer's level is at least layerHu.
     const double layer = insideLevels.empty() ? params.layerHu : std::max(Median(insideLevels), params.layerHu);
-    const double threshold = hasFat ? 0.5 * (layer + Median(fatLevels)) : 0.0;
+    const double fat = hasFat ? Median(fatLevels) : 0.0;
+    const double threshold = hasFat ? 0.5 * (layer + fat) : 0.0;
     // 3. Candidates.
     std::vector<double> candidate(K, -1.0);
     const int minimumWall = static_cast<int>(std::ceil(params.minimumWallMm / params.sampleMm));
     const int support = static_cast<int>(std::ceil(params.fatSupportMm / params.sampleMm));
-    const double fat = hasFat ? Median(fatLevels) : 0.0;
     for (int k = 0; hasFat && k < K; ++k)
     {
       // Calcium as the anchor (vessel-wall.md §1.1): a plaque at the outer wall is far brighter
