@@ -1,33 +1,20 @@
-// Tests of the label maps' run-length gzip (GzipRuns.h) and of the NRRD fast path that writes it
-// (WriteImage.h): two independent inflaters — libdeflate's and ITK's reader (zlib, through NrrdIO)
-// — give back every byte, and the header is the one ITK's writer gives the same image.
+// Tests of the label maps' run-length gzip (GzipRuns.h): libdeflate's inflater gives back every byte
+// (ITK's reader, zlib through NrrdIO, inflates the same cases in WriteLabelNrrdTest).
 #include <cmath>
 #include <cstdint>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <limits>
 #include <random>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <itkImageFileReader.h>
-#include <itkImageFileWriter.h>
-#include <itkMetaDataObject.h>
 #include <libdeflate.h>
 
-#include "Common/Errors.h"
 #include "IO/GzipRuns.h"
-#include "IO/WriteImage.h"
-#include "TemporaryFolder.h"
 
 namespace sgp
 {
 namespace
 {
-
-namespace fs = std::filesystem;
 
 /// The bytes libdeflate inflates from `member`, which must be one whole gzip member whose CRC-32
 /// and size match what it inflates to (libdeflate checks both).
@@ -114,132 +101,6 @@ TEST(GzipRunsTest, LabelMapOfRuns_SmallAndRoundTrips)
   }
   EXPECT_LE(double(member.size()), std::ceil(bits / 8.0) + 21.0);
   EXPECT_LT(member.size(), data.size() / 20); // so under 5 % of the 1.8 MB: a literal a byte would be 100 %
-}
-
-class WriteLabelNrrdTest : public testing::TemporaryFolderTest
-{
-protected:
-  /// A label map of odd sizes whose labels 0–4 come in runs of every length up to 40, on the
-  /// geometry given.
-  static LabelImage::Pointer MakeLabels(const double spacing[3], const double origin[3], const double direction[9])
-  {
-    auto image = LabelImage::New();
-    LabelImage::RegionType region;
-    region.SetSize({ { 37, 29, 23 } });
-    image->SetRegions(region);
-    image->Allocate();
-    image->SetSpacing(spacing);
-    image->SetOrigin(origin);
-    LabelImage::DirectionType d;
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c)
-        d(r, c) = direction[3 * r + c];
-    image->SetDirection(d);
-    unsigned char* voxel = image->GetBufferPointer();
-    const long n = 37 * 29 * 23;
-    for (long v = 0, run = 1, value = 0; v < n; ++run, value = (value + 3) % 5)
-      for (long r = 0; r < run % 41 && v < n; ++r)
-        voxel[v++] = static_cast<unsigned char>(value);
-    return image;
-  }
-
-  static std::string Bytes(const fs::path& path)
-  {
-    std::ifstream in(path, std::ios::binary);
-    return { std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>() };
-  }
-
-  static std::string Header(const fs::path& path)
-  {
-    const std::string bytes = Bytes(path);
-    return bytes.substr(0, bytes.find("\n\n") + 2);
-  }
-
-  static LabelImage::Pointer ReadWithItk(const fs::path& path)
-  {
-    auto reader = itk::ImageFileReader<LabelImage>::New();
-    reader->SetFileName(path.string());
-    reader->Update();
-    return reader->GetOutput();
-  }
-
-  static void WriteWithItk(const LabelImage& image, const fs::path& path)
-  {
-    auto writer = itk::ImageFileWriter<LabelImage>::New();
-    writer->SetInput(&image);
-    writer->SetFileName(path.string());
-    writer->SetUseCompression(true);
-    writer->Update();
-  }
-
-  /// The fast path's file against ITK's writer's for the same image: the same header text, and
-  /// ITK reads back the image's voxels and, bit for bit, the geometry it reads from its own file
-  /// (the image's own, but for the last bit of an oblique direction's products, which 17 digits
-  /// carry as ITK's writer rounds them).
-  void ExpectAsItkWrites(const LabelImage& image, const std::string& name)
-  {
-    const fs::path fast = folder / (name + ".nrrd"), itk = folder / (name + "-itk.nrrd");
-    WriteLabelMap(image, fast.string());
-    WriteWithItk(image, itk);
-    EXPECT_EQ(Header(fast), Header(itk)) << name;
-    EXPECT_NE(Bytes(fast), Bytes(itk)) << name << ": the fast path was not taken (ITK's own file)";
-    const LabelImage::Pointer read = ReadWithItk(fast), reference = ReadWithItk(itk);
-    EXPECT_EQ(read->GetLargestPossibleRegion(), image.GetLargestPossibleRegion());
-    EXPECT_EQ(read->GetSpacing(), reference->GetSpacing()) << name;
-    EXPECT_EQ(read->GetOrigin(), reference->GetOrigin()) << name;
-    EXPECT_EQ(read->GetDirection(), reference->GetDirection()) << name;
-    const auto n = image.GetPixelContainer()->Size();
-    EXPECT_TRUE(std::equal(image.GetBufferPointer(), image.GetBufferPointer() + n, read->GetBufferPointer())) << name;
-  }
-};
-
-TEST_F(WriteLabelNrrdTest, Geometries_HeaderAsItksAndSameImageRead)
-{
-  const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
-  const double c = std::cos(0.3), s = std::sin(0.3);
-  const double oblique[9] = { c, -s, 0, s * 0.6, c * 0.6, -0.8, s * 0.8, c * 0.8, 0.6 };
-  const double flipped[9] = { -1, 0, 0, 0, 1, 0, 0, 0, -1 };
-  const double spacing[3] = { 0.7, 0.8, 2.5 }, unit[3] = { 1, 1, 1 }, fine[3] = { 0.1, 1.0 / 3.0, 1e-3 };
-  const double origin[3] = { -178.85, -168.34420965866127, -144.1241446364339 };
-  const double odd[3] = { -0.0, 1e-20, 123456.789 }, zero[3] = { 0, 0, 0 };
-  ExpectAsItkWrites(*MakeLabels(unit, zero, identity), "identity");
-  ExpectAsItkWrites(*MakeLabels(spacing, origin, identity), "ct-like");
-  ExpectAsItkWrites(*MakeLabels(spacing, origin, oblique), "oblique");
-  ExpectAsItkWrites(*MakeLabels(fine, odd, flipped), "flipped-odd-numbers");
-}
-
-TEST_F(WriteLabelNrrdTest, OtherFormatsAndMetadata_WrittenByItk)
-{
-  const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 }, spacing[3] = { 0.7, 0.8, 2.5 }, origin[3] = { 1, 2, 3 };
-  const LabelImage::Pointer image = MakeLabels(spacing, origin, identity);
-  for (const std::string name : { "labels.nhdr", "labels.nii.gz", "labels.mha" })
-  {
-    WriteLabelMap(*image, (folder / name).string());
-    const LabelImage::Pointer read = ReadWithItk(folder / name);
-    const auto n = image->GetPixelContainer()->Size();
-    EXPECT_TRUE(std::equal(image->GetBufferPointer(), image->GetBufferPointer() + n, read->GetBufferPointer())) << name;
-  }
-  // Metadata to carry: ITK's writer, which writes it.
-  itk::EncapsulateMetaData<std::string>(image->GetMetaDataDictionary(), "Segment0_Name", "lumen");
-  WriteLabelMap(*image, (folder / "named.nrrd").string());
-  EXPECT_NE(Header(folder / "named.nrrd").find("Segment0_Name:=lumen"), std::string::npos);
-}
-
-TEST_F(WriteLabelNrrdTest, UnwritablePath_InputErrorAndNoFile)
-{
-  const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 }, unit[3] = { 1, 1, 1 }, zero[3] = { 0, 0, 0 };
-  const fs::path path = folder / "labels.nrrd";
-  fs::create_directory(path); // a folder where the file should go
-  try
-  {
-    WriteLabelMap(*MakeLabels(unit, zero, identity), path.string());
-    ADD_FAILURE();
-  }
-  catch (const InputError& e)
-  {
-    EXPECT_EQ(std::string(e.what()).rfind("Cannot write '" + path.string() + "': ", 0), 0u) << e.what();
-  }
-  EXPECT_TRUE(fs::is_directory(path));
 }
 
 } // namespace
