@@ -135,9 +135,6 @@ std::string GzipRuns(const unsigned char* data, std::size_t size)
       bits.Put(c.extraValue, c.extraBits);
     bits.Put(0, 5); // distance 1: distance code 0, five bits, no extra bits
   };
-  const LengthCode longest = CodeLength(258);
-  const std::uint64_t longestCopy = code.bits[longest.symbol]; // followed by five zero bits
-  const unsigned longestBits = code.length[longest.symbol] + 5u;
   for (std::size_t n = 0; n < size;)
   {
     const unsigned char b = data[n++];
@@ -145,7 +142,7 @@ std::string GzipRuns(const unsigned char* data, std::size_t size)
     std::size_t run = RunOf(data + n, size - n, b);
     n += run;
     for (; run >= 258; run -= 258)
-      bits.Put(longestCopy, longestBits);
+      copy(258);
     if (run >= 3)
       copy(static_cast<unsigned>(run));
     else
