@@ -32,10 +32,14 @@ void PrintPlanSummary(const RepairPlan& plan, const std::string& acmMode, std::o
   if (plan.seedAutomatic)
     out << "Seed: automatic, RAS " << FormatNumber(-plan.seedLps.x()) << "," << FormatNumber(-plan.seedLps.y()) << ","
         << FormatNumber(plan.seedLps.z()) << " mm: " << plan.seedDescription << std::endl;
-  out << "Lumen: " << FormatNumber(lumen.volumeMl) << " mL; window " << FormatNumber(lumen.lowerHu, 0) << " to "
-      << FormatNumber(lumen.upperHu, 0) << " HU (seed median " << FormatNumber(lumen.seedMedianHu, 0) << " HU, sigma "
-      << FormatNumber(lumen.seedSigmaHu, 0) << " HU, from " << lumen.windowSource << "); boundary at "
-      << FormatNumber(lumen.edgeHu, 0) << " HU" << std::endl;
+  if (plan.lumenGiven)
+    out << "Lumen: " << FormatNumber(lumen.volumeMl) << " mL, given: " << lumen.windowSource
+        << (plan.ctGiven ? "" : "; no CT, so no outer wall: sized on the lumen (estimated)") << std::endl;
+  else
+    out << "Lumen: " << FormatNumber(lumen.volumeMl) << " mL; window " << FormatNumber(lumen.lowerHu, 0) << " to "
+        << FormatNumber(lumen.upperHu, 0) << " HU (seed median " << FormatNumber(lumen.seedMedianHu, 0) << " HU, sigma "
+        << FormatNumber(lumen.seedSigmaHu, 0) << " HU, from " << lumen.windowSource << "); boundary at "
+        << FormatNumber(lumen.edgeHu, 0) << " HU" << std::endl;
   if (plan.Reached(PlanStage::Centerlines))
   {
     const CenterlineTree& tree = plan.centerlines;
@@ -101,6 +105,13 @@ void PrintPlanSummary(const RepairPlan& plan, const std::string& acmMode, std::o
           << " mm along the aorta):" << std::endl;
     else
       out << "Measurements (proximal site not known: no renal artery in view; give --lowestRenalOstium):" << std::endl;
+    const auto source = [](bool given, bool found) { return given ? "given" : found ? "found" : "not found"; };
+    out << "Landmarks: lowest renal ostium "
+        << source(m.site.source == ProximalSiteSource::Landmark, m.site.source == ProximalSiteSource::Renal)
+        << ", aortic bifurcation " << source(m.bifurcationGiven, true) << ", right internal iliac origin "
+        << source(m.internalIliacOriginGiven[0], m.internalIliacOriginLps[0].allFinite())
+        << ", left internal iliac origin "
+        << source(m.internalIliacOriginGiven[1], m.internalIliacOriginLps[1].allFinite()) << std::endl;
     for (const Measurement& v : m.values)
       out << "  " << ValueLabel(v.name) << ": " << ClinicalText(v.value, v.unit) << std::endl;
   }

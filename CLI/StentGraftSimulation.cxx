@@ -13,6 +13,7 @@
 #include "CLPSupport.h"
 #include "IO/ReadCtImage.h"
 #include "IO/ReadDeviceCatalog.h"
+#include "IO/ReadLumenSegmentation.h"
 #include "IO/ReadNeckRules.h"
 #include "IO/ResourcePath.h"
 #include "IO/WriteImage.h"
@@ -36,7 +37,9 @@ int main(int argc, char* argv[])
   {
     using namespace sgp;
     // Inside Slicer, PARSE_ARGS (SEM's GenerateCLP) reads a point's components with atof.
-    ValidatePointArguments(argc, argv, { "seed", "lowestRenalOstium" });
+    ValidatePointArguments(
+      argc, argv,
+      { "seed", "lowestRenalOstium", "aorticBifurcation", "rightInternalIliacOrigin", "leftInternalIliacOrigin" });
     PlanOutputPaths paths;
     paths.labelMap = outputLabelMap;
     paths.wallLabelMap = outputWallLabelMap;
@@ -76,6 +79,19 @@ int main(int argc, char* argv[])
     PlanRequest request = PlanRequestFor(paths);
     if (!lowestRenalOstium.empty())
       request.lowestRenalOstiumLps = RasToLps(lowestRenalOstium);
+    if (!aorticBifurcation.empty())
+      request.landmarks.aorticBifurcationLps = RasToLps(aorticBifurcation);
+    if (!rightInternalIliacOrigin.empty())
+      request.landmarks.internalIliacOriginLps[0] = RasToLps(rightInternalIliacOrigin);
+    if (!leftInternalIliacOrigin.empty())
+      request.landmarks.internalIliacOriginLps[1] = RasToLps(leftInternalIliacOrigin);
+    // The input volume named as the lumen segmentation too: the plan runs on the segmentation alone.
+    const bool ctGiven = inputLumenSegmentation.empty() || inputLumenSegmentation != inputVolume;
+    if (inputLumenSegmentation.empty() && !lumenLabels.empty())
+      PrintWarnings({ "lumenLabels (" + lumenLabels +
+                      ") is used only with inputLumenSegmentation, which was not given; the lumen is grown from the "
+                      "CT." },
+                    std::cerr);
     // The catalogue is read before any heavy work: a broken catalogue or unknown --device fails at once.
     const PlanRunInfo run{ inputVolume,
                            deviceCatalog.empty() ? BesideExecutable(argv[0], "devices.json") : deviceCatalog,
@@ -100,9 +116,19 @@ int main(int argc, char* argv[])
                                          { "SelectDevice", 0.1 },
                                          { "SimulateGraft", 1.0 },
                                          { "WriteOutputs", 1.0 } });
-    progress.Begin("ReadVolume", "Reading the CT volume");
-    // ITK's readers' own prints are dropped: a failure is our one ERROR: line (QuietStderr.h).
-    CtVolume volume = clp::WithStderrDropped([&] { return ReadCtImage(inputVolume); });
+    progress.Begin("ReadVolume", ctGiven ? "Reading the CT volume" : "Reading the lumen segmentation");
+    // ITK's readers' own prints are dropped: a failure is our one ERROR: line (QuietStderr.h). The
+    // segmentation first: its mask is small beside the CT, and a bad one fails before the CT is read.
+    if (!inputLumenSegmentation.empty())
+    {
+      GivenLumenFile given =
+        clp::WithStderrDropped([&] { return ReadLumenSegmentation(inputLumenSegmentation, lumenLabels); });
+      request.givenLumen = given.mask;
+      request.givenLumenDescription = given.description;
+    }
+    CtVolume volume;
+    if (ctGiven)
+      volume = clp::WithStderrDropped([&] { return ReadCtImage(inputVolume); });
     PrintWarnings(volume.warnings, std::cerr);
 
     // `labelMapWritten` and `wallLabelMapWritten` are declared after `outputs`, so on an exception

@@ -73,8 +73,11 @@ if [ "$#" -eq 2 ] && [ "$1" = "-LE" ] && [ "$2" = "benchmark" ] || [ "${SGP_SANI
     # of them, the neck thrombus and the limb one length too long, run here and cover the deployment
     # and the fit check on healthy wall. The landmark variants (issue 31: Issue31/, 11 renal and 9
     # iliac phantoms) run the labelling the single-phantom tests here run (VisceralBranches,
-    # ChestScanWithoutRenals, CutScanWithoutRenals).
-    repeated='^(AutomaticSeed\.|FindAorticSeed\.(RandomAnatomies|EveryTestPhantom)_|RealAnatomy/(AvtAutomaticSeed|AvtCutBelowTheBifurcation)\.|Deployment/|Deployment\.(SameNeck|DemoPhantom|Twelve|TwentySix|Sixteen)|Issue31/|Issue32/|Issue32\.)'
+    # ChestScanWithoutRenals, CutScanWithoutRenals). Issue 45's given lumen and landmarks: the
+    # round trip (GivenLumen.RoundTripPlansTheSame) and the unit tests of the lumen's resampling and
+    # the landmarks run here; the AVT cases and the landmark and TotalSegmentator phantoms repeat
+    # that code on more plans.
+    repeated='^(AutomaticSeed\.|FindAorticSeed\.(RandomAnatomies|EveryTestPhantom)_|RealAnatomy/(AvtAutomaticSeed|AvtCutBelowTheBifurcation|AvtGivenLumen)\.|GivenLandmarks\.(Correct|Each)|GivenLumenMap\.|Deployment/|Deployment\.(SameNeck|DemoPhantom|Twelve|TwentySix|Sixteen)|Issue31/|Issue32/|Issue32\.)'
     ctest --output-on-failure -j 2 -L 'unit|cli' -E "$repeated"
     stage_done "sanitizer tests"
   fi

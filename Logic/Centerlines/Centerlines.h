@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,12 @@ struct CenterlineTree
   double scanHighestZMm = std::numeric_limits<double>::quiet_NaN();
   /// The scan's coarsest voxel spacing, mm; NaN: not known.
   double largestSpacingMm = std::numeric_limits<double>::quiet_NaN();
+  /// Landmarks a person gave (GivenLandmarks.h), which replace the ones found: the aortic
+  /// bifurcation (LPS mm; unset: found) and each internal iliac origin as an abscissa along its
+  /// iliac (right, left; mm; NaN: found).
+  std::optional<Point3> givenBifurcationLps;
+  std::array<double, 2> givenInternalIliacAbscissaMm{ std::numeric_limits<double>::quiet_NaN(),
+                                                      std::numeric_limits<double>::quiet_NaN() };
   /// The scan cuts an iliac short: the plan is partial.
   bool Partial() const { return std::isfinite(iliacCoverageMm[0]) || std::isfinite(iliacCoverageMm[1]); }
 

@@ -55,7 +55,7 @@ const char* Side(int side)
 
 } // namespace
 
-double InternalIliacOriginAbscissa(const CenterlineTree& tree, int side)
+double FoundInternalIliacOriginAbscissa(const CenterlineTree& tree, int side)
 {
   const Centerline& iliac = side == 0 ? tree.rightIliac : tree.leftIliac;
   const Landmark* junctionLandmark = tree.FindLandmark(std::string(Side(side)) + "IliacBifurcation");
@@ -80,6 +80,16 @@ double InternalIliacOriginAbscissa(const CenterlineTree& tree, int side)
   return ProjectOntoCenterline(iliac, origin);
 }
 
+double InternalIliacOriginAbscissa(const CenterlineTree& tree, int side)
+{
+  if (std::isfinite(tree.givenInternalIliacAbscissaMm[std::size_t(side)]))
+    return tree.givenInternalIliacAbscissaMm[std::size_t(side)];
+  return FoundInternalIliacOriginAbscissa(tree, side);
+}
+
+namespace
+{
+
 /// The aortic axis and each common iliac's chord (the file comment); the lines found (fewer than
 /// three when an iliac is missing or its chord degenerate).
 std::vector<Line> BifurcationAxes(const CenterlineTree& tree)
@@ -92,7 +102,8 @@ std::vector<Line> BifurcationAxes(const CenterlineTree& tree)
     const Centerline& iliac = side == 0 ? tree.rightIliac : tree.leftIliac;
     if (iliac.Size() < 2)
       continue;
-    const double origin = InternalIliacOriginAbscissa(tree, side);
+    // The found origin, not a given one: B does not move with an internal iliac origin given.
+    const double origin = FoundInternalIliacOriginAbscissa(tree, side);
     const double end = std::isfinite(origin) ? std::min(BifurcationIliacReachMm, origin - 5.0)
                                              : std::min(BifurcationIliacReachMm, iliac.LengthMm());
     const double from = std::min(10.0, 0.5 * end);
@@ -101,6 +112,8 @@ std::vector<Line> BifurcationAxes(const CenterlineTree& tree)
   }
   return axes;
 }
+
+} // namespace
 
 AorticBifurcation FindAorticBifurcation(const CenterlineTree& tree)
 {
@@ -121,6 +134,13 @@ AorticBifurcation FindAorticBifurcation(const CenterlineTree& tree)
            (!thin || (at - junction).dot(down) <= belowJunctionToleranceMm);
   };
   AorticBifurcation result;
+  if (tree.givenBifurcationLps)
+  {
+    result.lps = *tree.givenBifurcationLps;
+    result.given = true;
+    result.abscissaMm = L + (result.lps - junction).dot(down);
+    return result;
+  }
   result.axesMeet = meet(BifurcationAxes(tree), result.lps);
   // (Chords over the iliacs' first 7 mm from the junction, before a kink 10 mm below B, met at
   // the junction too: the skeleton runs down the middle of the merged cross-section there. The

@@ -24,6 +24,9 @@
 ///    B, so the rule is not applied there, and a kinked start is not recognised. Its abscissa is
 ///    along the aortic centerline, extended straight past the centerline's end where B lies beyond.
 ///
+/// A landmark a person gave (CenterlineTree::givenBifurcationLps, givenInternalIliacAbscissaMm;
+/// GivenLandmarks.h) is returned as it is, in place of the rules above.
+///
 /// Input: a labelled CenterlineTree (LPS mm) whose aorta has at least two points. Output in LPS mm
 /// and mm of arc length. No errors: the fallbacks above are the answer where the axes say nothing.
 #pragma once
@@ -43,11 +46,16 @@ constexpr double BifurcationIliacReachMm = 30.0;
 /// that iliac's centerline (mm); NaN when the tree has no internal iliac junction on that side.
 double InternalIliacOriginAbscissa(const CenterlineTree& tree, int side);
 
+/// The same found by the rule above, whatever was given (B's iliac chords end at it, so a given
+/// origin does not move B).
+double FoundInternalIliacOriginAbscissa(const CenterlineTree& tree, int side);
+
 struct AorticBifurcation
 {
   Point3 lps = Point3::Zero(); ///< B, LPS mm
   double abscissaMm = 0.0;     ///< along the aorta from its top, mm
-  bool axesMeet = false;       ///< false: B is the skeleton's junction (the fallback)
+  bool axesMeet = false;       ///< false: B is the skeleton's junction (the fallback) or given
+  bool given = false;          ///< B is the point a person gave (GivenLandmarks.h)
 };
 
 /// B as described in the file comment.

@@ -87,6 +87,23 @@ th{background:#eee;text-align:left}.num{text-align:right;white-space:nowrap}.def
 .figure,table{break-inside:avoid;page-break-inside:avoid}}
 )";
 
+/// Whether each landmark the plan measures from was given or found, in words.
+std::string LandmarkSources(const RepairPlan& plan)
+{
+  if (!plan.Reached(PlanStage::Measurements))
+    return "not measured";
+  const Measurements& m = plan.measurements;
+  const auto source = [](bool given, bool found) {
+    return std::string(given ? "<b>given by the user</b>" : found ? "found" : "not found");
+  };
+  return "lowest renal ostium " +
+         source(m.site.source == ProximalSiteSource::Landmark, m.site.source == ProximalSiteSource::Renal) +
+         "; aortic bifurcation " + source(m.bifurcationGiven, true) + "; right internal iliac origin " +
+         source(m.internalIliacOriginGiven[0], m.internalIliacOriginLps[0].allFinite()) +
+         "; left internal iliac origin " +
+         source(m.internalIliacOriginGiven[1], m.internalIliacOriginLps[1].allFinite());
+}
+
 void Header(const RepairPlan& plan, const ReportRun& run, std::ostream& out)
 {
   const LabelImage& grid = *plan.lumen.mask;
@@ -99,10 +116,18 @@ void Header(const RepairPlan& plan, const ReportRun& run, std::ostream& out)
       << FormatNumber(spacing[0], 3) << " &#215; " << FormatNumber(spacing[1], 3) << " &#215; "
       << FormatNumber(spacing[2], 3) << " mm</td></tr>"
       << "<tr><td>Run</td><td>" << Escape(run.date) << ", StentGraftPlanner " << Escape(run.version) << "</td></tr>"
-      << "<tr><td>Seed</td><td>RAS " << FormatNumber(-plan.seedLps.x()) << ", " << FormatNumber(-plan.seedLps.y())
-      << ", " << FormatNumber(plan.seedLps.z()) << " mm, "
-      << (plan.seedAutomatic ? "found automatically: " + Escape(plan.seedDescription)
-                             : std::string("given by the user"))
+      << "<tr><td>Seed</td><td>"
+      << (!plan.seedAutomatic && !plan.seedGiven
+            ? std::string("none (the lumen was given)")
+            : "RAS " + FormatNumber(-plan.seedLps.x()) + ", " + FormatNumber(-plan.seedLps.y()) + ", " +
+                FormatNumber(plan.seedLps.z()) + " mm, " +
+                (plan.seedAutomatic ? "found automatically: " + Escape(plan.seedDescription)
+                                    : std::string("given by the user")))
+      << "</td></tr>"
+      << "<tr><td>Lumen</td><td>"
+      << (plan.lumenGiven ? "given: " + Escape(plan.lumen.windowSource) +
+                              (plan.ctGiven ? "" : "; no CT, so no outer wall: sized on the lumen (estimated)")
+                          : std::string("grown from the seed (region growing)"))
       << "</td></tr>"
       << "<tr><td>Proximal site</td><td>"
       << (site.Known() ? Num(site.abscissaMm) + " mm along the aorta from its top in the scan, LPS " +
@@ -112,6 +137,7 @@ void Header(const RepairPlan& plan, const ReportRun& run, std::ostream& out)
                                      "renal level, so the neck values and the deployment target are not measured. "
                                      "Place the lowest-renal point (lowestRenalOstium) and run again."))
       << "</td></tr>"
+      << "<tr><td>Landmarks</td><td>" << LandmarkSources(plan) << "</td></tr>"
       << "<tr><td>Catalogue</td><td>" << Escape(run.deviceCatalog)
       << " (public defaults: verify against the current instructions for use)</td></tr></table>\n";
 }

@@ -10,7 +10,12 @@
 /// whose control points are the landmarks, labelled by name — an aortic branch's ostium described
 /// by the evidence for its name (Centerline::evidence) — `coordinateSystem` LPS. Slicer loads
 /// it as a point list with named points; a pointfile parameter declares it
-/// `coordinateSystem="lps"`.
+/// `coordinateSystem="lps"`. With the plan's measurements, the landmarks the plan measures from —
+/// and that a person may give instead (GivenLandmarks.h) — stand where the plan used them, under
+/// the names of the CLI's inputs: `lowestRenalOstium` (the proximal site on the aortic centerline,
+/// when known), `aorticBifurcation` (B), `rightInternalIliacOrigin`, `leftInternalIliacOrigin` (in
+/// place of the skeleton's junctions `…IliacBifurcation`); each described "Given by the user." or
+/// "Found: …" (how), so a panel can tell which to pass back when one is moved.
 ///
 /// \throws InputError naming the path when it cannot be written.
 #pragma once
@@ -18,11 +23,12 @@
 #include <string>
 
 #include "Centerlines/Centerlines.h"
+#include "Measurement/MeasureAnatomy.h"
 
 namespace sgp
 {
 
 void WriteCenterlines(const CenterlineTree& tree, const std::string& path);
-void WriteLandmarks(const CenterlineTree& tree, const std::string& path);
+void WriteLandmarks(const CenterlineTree& tree, const std::string& path, const Measurements* measurements = nullptr);
 
 } // namespace sgp

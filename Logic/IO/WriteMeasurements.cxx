@@ -92,12 +92,16 @@ nlohmann::json MeasurementsToJson(const Measurements& measurements)
   if (!site.Known())
     out["proximalSite"]["surfaceStartAbscissaMm"] = site.abscissaMm;
   out["aorticBifurcation"] = { { "lps", JsonPoint(measurements.bifurcationLps) },
-                               { "abscissaMm", measurements.bifurcationAbscissaMm } };
+                               { "abscissaMm", measurements.bifurcationAbscissaMm },
+                               { "source", measurements.bifurcationGiven ? "given" : "found" } };
   for (int side = 0; side < 2; ++side)
   {
     const Point3& origin = measurements.internalIliacOriginLps[side];
     out[side == 0 ? "rightInternalIliacOrigin" : "leftInternalIliacOrigin"] =
-      origin.allFinite() ? nlohmann::json{ { "lps", JsonPoint(origin) } } : nlohmann::json(nullptr);
+      origin.allFinite()
+        ? nlohmann::json{ { "lps", JsonPoint(origin) },
+                          { "source", measurements.internalIliacOriginGiven[std::size_t(side)] ? "given" : "found" } }
+        : nlohmann::json(nullptr);
   }
   nlohmann::json values = nlohmann::json::array();
   for (const Measurement& m : measurements.values)

@@ -77,6 +77,8 @@ nlohmann::json PlanReportJson(const RepairPlan& plan, const PlanRunInfo& run)
                           { "planes", planes } };
   report["run"] = { { "inputVolume", run.inputVolume },
                     { "lumenVolumeMl", plan.lumen.volumeMl },
+                    { "lumenSource", plan.lumenGiven ? "given" : "grown" },
+                    { "lumenFrom", plan.lumen.windowSource },
                     { "acmIterations", plan.fit.iterations },
                     { "acmConverged", plan.fit.converged } };
   return report;
@@ -158,7 +160,8 @@ void WritePlanOutputs(const RepairPlan& plan,
   if (!paths.landmarks.empty())
   {
     Require(plan, PlanStage::Centerlines, "outputLandmarks");
-    WriteLandmarks(plan.centerlines, outputs.Stage(paths.landmarks));
+    WriteLandmarks(plan.centerlines, outputs.Stage(paths.landmarks),
+                   plan.Reached(PlanStage::Measurements) ? &plan.measurements : nullptr);
   }
   if (!paths.initialStentModel.empty())
   {

@@ -467,6 +467,10 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
   const AorticBifurcation bifurcation = FindAorticBifurcation(tree);
   out.bifurcationLps = bifurcation.lps;
   out.bifurcationAbscissaMm = bifurcation.abscissaMm;
+  out.bifurcationGiven = bifurcation.given;
+  for (int side = 0; side < 2; ++side)
+    out.internalIliacOriginGiven[std::size_t(side)] =
+      std::isfinite(tree.givenInternalIliacAbscissaMm[std::size_t(side)]);
   MeasureContext c{ tree,
                     site,
                     { &tree.rightIliac, &tree.leftIliac },

@@ -124,6 +124,9 @@ struct Measurements
   ProximalSite site;
   Point3 bifurcationLps = Point3::Zero();
   double bifurcationAbscissaMm = 0.0; ///< along the aorta from its top
+  /// B and each internal iliac origin (right, left) were given by a person (GivenLandmarks.h).
+  bool bifurcationGiven = false;
+  std::array<bool, 2> internalIliacOriginGiven{ false, false };
   /// The right [0] and left [1] internal iliac origins where the axes meet (VesselOrigins.h), on
   /// their iliac's centerline; NaN where no internal iliac was found.
   std::array<Point3, 2> internalIliacOriginLps{ Point3::Constant(std::numeric_limits<double>::quiet_NaN()),

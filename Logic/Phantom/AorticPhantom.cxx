@@ -89,6 +89,8 @@ void ValidatePhantomParams(const PhantomParams& p)
   check("renalDivisionMm", p.renalDivisionMm, 0, 40, "mm");
   check("accessoryRenalOffsetMm", p.accessoryRenalOffsetMm, -40, 40, "mm");
   check("commonIliacKinkDeg", p.commonIliacKinkDeg, 0, 60, "degrees");
+  check("rightIliacDecoyBranchMm", p.rightIliacDecoyBranchMm, 0, std::max(0.0, p.rightCommonIliacLengthMm - 15.0),
+        "mm");
   if (p.accessoryRenalOffsetMm != 0.0 && std::abs(p.accessoryRenalOffsetMm) < 8.0)
     throw InputError("accessoryRenalOffsetMm is " + FormatNumber(p.accessoryRenalOffsetMm) +
                      " mm; expected 0 (none) or at least 8 mm above or below the right renal.");

@@ -153,6 +153,12 @@ struct PhantomParams
   /// aortic bifurcation — a kinked start; its length along the axis is kept; [0, 60].
   double commonIliacKinkDeg = 0.0;
   bool posteriorInternalIliac = false; ///< the internal iliacs leave from the back (mostly posterior, down)
+  /// A branch as wide as the internal iliac leaving the right common iliac this far below the
+  /// aortic bifurcation, running out, back and a little down for 35 mm (a large iliolumbar or an
+  /// early posterior trunk): a labelling that takes the first wide branch for the internal iliac
+  /// takes it. Not in the truth's landmarks (the internal iliac stays where it was); 0 = none;
+  /// [0, the right common iliac's length − 15].
+  double rightIliacDecoyBranchMm = 0.0;
 };
 
 /// Labels of the truth image.

@@ -258,6 +258,12 @@ Anatomy BuildAnatomy(const PhantomParams& p)
     anatomy.tubes.push_back(StraightTube(prefix + "Iliac", common, r - wallMm));
     anatomy.tubes.push_back(StraightTube(prefix + "ExternalIliac", external, lumenOf(0.75 * r)));
     anatomy.tubes.push_back(StraightTube(prefix + "InternalIliac", internal, lumenOf(0.55 * r)));
+    if (side == 0 && p.rightIliacDecoyBranchMm > 0.0)
+    {
+      const Point3 from = common[0] + p.rightIliacDecoyBranchMm * (common[1] - common[0]).normalized();
+      anatomy.tubes.push_back(
+        StraightTube("rightIliacDecoy", { from, from + 35.0 * Unit(lateral * 0.7, 0.65, -0.3) }, lumenOf(0.55 * r)));
+    }
     (side == 0 ? truth.sizing.rightInternalIliacRadius : truth.sizing.leftInternalIliacRadius) = lumenOf(0.55 * r);
     // The internal iliac's ostium on the common iliac's wall: its most upstream point along the
     // common iliac's axis (the branch leaves that axis at its end; an oblique branch's ostium starts

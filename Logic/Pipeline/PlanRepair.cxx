@@ -19,6 +19,7 @@
 #include "Device/DeployGraft.h"
 #include "Segmentation/FindAorticSeed.h"
 #include "Segmentation/FindEndograft.h"
+#include "Segmentation/LumenFromSegmentation.h"
 #include "Stent/WallDistanceField.h"
 
 namespace sgp
@@ -92,15 +93,31 @@ void NoEndograft(const EndograftEvidence& metal)
                      "pre-operative CT angiograms of an unrepaired aorta.");
 }
 
-void ExtractCenterlines(const PlanParams& params, const StageReporter& report, RepairPlan& plan)
+void ExtractCenterlines(const PlanRequest& request,
+                        const PlanParams& params,
+                        const StageReporter& report,
+                        RepairPlan& plan)
 {
   report.Begin("ThinLumen", "Thinning the lumen into its skeleton");
   const Skeleton skeleton = ThinLabelMap(*plan.lumen.mask, report.Callback());
   report.Begin("ExtractCenterlines", "Labelling the aorta, the iliac arteries and their branches");
-  const SkeletonGraph graph = BuildSkeletonGraph(skeleton, *plan.lumen.mask, params.graph);
-  report.Progress(0.3);
-  plan.centerlines = LabelAortoIliacTree(graph, params.centerlines);
+  try
+  {
+    const SkeletonGraph graph = BuildSkeletonGraph(skeleton, *plan.lumen.mask, params.graph);
+    report.Progress(0.3);
+    plan.centerlines = LabelAortoIliacTree(graph, params.centerlines);
+  }
+  catch (const AlgorithmError& e)
+  {
+    // A given lumen that is no aorto-iliac Y is the input's fault, and the message says which input.
+    if (!plan.lumenGiven)
+      throw;
+    throw InputError("The lumen segmentation given (" + request.givenLumenDescription +
+                     ") forms no aorto-iliac Y: " + e.what() +
+                     " Expected the aorta and both common iliac arteries in the labels chosen (lumenLabels).");
+  }
   AssignInscribedRadii(plan.centerlines, skeleton);
+  ApplyGivenLandmarks(plan.centerlines, request.landmarks);
 }
 
 /// The proximal site, the mesh, the wall field and the fit in acmMode; returns the wall field,
@@ -154,7 +171,9 @@ TracedWall TraceWall(const CtImage& ct, const PlanRequest& request, const PlanPa
   const auto start = std::chrono::steady_clock::now();
   VesselWallParams wallParams = params.wall;
   // Nothing outside the lumen above its window is blood (VesselWall.h).
-  wallParams.calciumHu = std::min(plan.lumen.calciumHu, params.wall.calciumHu);
+  // (A given lumen's window is NaN where the CT held no interior voxel: the default then.)
+  if (std::isfinite(plan.lumen.calciumHu))
+    wallParams.calciumHu = std::min(plan.lumen.calciumHu, params.wall.calciumHu);
   TracedWall traced;
   traced.wall = TraceVesselWall(ct, *plan.lumen.mask, plan.centerlines, plan.site.abscissaMm, wallParams);
   if (request.wallLabelMap)
@@ -164,9 +183,20 @@ TracedWall TraceWall(const CtImage& ct, const PlanRequest& request, const PlanPa
 }
 
 /// Takes the traced wall into the plan, with its warnings.
-void ReportWall(TracedWall traced, const PlanParams& params, const StageReporter& report, RepairPlan& plan)
+void ReportWall(std::future<TracedWall>& tracing,
+                const PlanParams& params,
+                const StageReporter& report,
+                RepairPlan& plan)
 {
   report.Begin("SegmentOuterWall", "Tracing the outer wall, the thrombus and the calcium");
+  if (!tracing.valid()) // no CT: nothing to trace the wall on
+  {
+    report.Warn("No CT was given, only the lumen segmentation: the outer wall, the thrombus and the calcium are "
+                "not traced, so the outer-wall diameters and thrombus values are not measured and the device is "
+                "sized on the lumen (estimated).");
+    return;
+  }
+  TracedWall traced = tracing.get();
   report.OwnTime(traced.seconds);
   plan.vesselWall = std::move(traced.wall);
   plan.wallLabels = traced.labels;
@@ -524,16 +554,19 @@ RepairPlan PlanRepair(CtImage::ConstPointer ct,
                       const PlanParams& params,
                       const PlanObserver& observer)
 {
-  if (!ct)
+  if (!ct && !request.givenLumen)
     throw InputError("PlanRepair was given no CT volume; expected a 3-D image in HU.");
   RepairPlan plan;
   const StageReporter report(observer, plan);
+  plan.lumenGiven = bool(request.givenLumen);
+  plan.ctGiven = bool(ct);
   if (seedLps)
   {
     plan.seedLps = *seedLps;
     plan.seedAutomatic = false;
+    plan.seedGiven = true;
   }
-  else
+  else if (!request.givenLumen)
   {
     report.Begin("FindSeed", "Finding the aorta for an automatic seed");
     AorticSeedParams search;
@@ -543,8 +576,15 @@ RepairPlan PlanRepair(CtImage::ConstPointer ct,
     plan.seedAutomatic = true;
     plan.seedDescription = found.description;
   }
-  SegmentLumen(*ct, plan.seedLps, params, report, plan);
+  if (request.givenLumen)
+  {
+    report.Begin("SegmentLumen", "Taking the lumen from the segmentation given");
+    plan.lumen = LumenFromSegmentation(*request.givenLumen, ct.GetPointer(), seedLps, request.givenLumenDescription);
+  }
+  else
+    SegmentLumen(*ct, plan.seedLps, params, report, plan);
   CtImage::Pointer around;
+  if (ct)
   {
     // The endograft check on the second core beside the crop of the CT the wall stage reads (only
     // it reads HU after segmentation, and only within its rays' reach of the lumen); both only
@@ -565,7 +605,7 @@ RepairPlan PlanRepair(CtImage::ConstPointer ct,
   if (request.through < PlanStage::Centerlines)
     return plan;
 
-  ExtractCenterlines(params, report, plan);
+  ExtractCenterlines(request, params, report, plan);
   plan.reached = PlanStage::Centerlines;
   if (request.through < PlanStage::StentSurface)
     return plan;
@@ -583,7 +623,7 @@ RepairPlan PlanRepair(CtImage::ConstPointer ct,
   if (request.through < PlanStage::Measurements)
     return plan;
 
-  ReportWall(traced.get(), params, report, plan);
+  ReportWall(traced, params, report, plan);
   if (request.ctAroundLumen)
     plan.ctAroundLumen = around;
   around = nullptr;

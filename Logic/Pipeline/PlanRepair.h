@@ -43,6 +43,7 @@
 #include <string_view>
 #include <vector>
 
+#include "Centerlines/GivenLandmarks.h"
 #include "Centerlines/LabelAortoIliacTree.h"
 #include "Centerlines/ProximalSite.h"
 #include "Centerlines/SkeletonGraph.h"
@@ -79,6 +80,14 @@ struct PlanRequest
   bool initialSurfaceValues = false;
   /// The user's lowest renal ostium (LPS mm); empty: found from the renal branches.
   std::optional<Point3> lowestRenalOstiumLps;
+  /// The user's aortic bifurcation and internal iliac origins (LPS mm; GivenLandmarks.h); empty:
+  /// found.
+  GivenLandmarks landmarks;
+  /// A lumen the user gave (on its own grid, non-zero = lumen; LumenFromSegmentation.h), taken
+  /// instead of region growing; null: grown from the seed. With it the CT may be null: the plan
+  /// then runs on the lumen alone (no outer wall: sized on the lumen, marked estimated).
+  LabelImage::ConstPointer givenLumen;
+  std::string givenLumenDescription; ///< what it is, for messages ("labels 52, 65 of 'x.nii.gz'")
   /// The wall label map (WallLabelMap: lumen, thrombus and wall, calcium), when the plan reaches
   /// the measurements.
   bool wallLabelMap = false;
@@ -139,6 +148,9 @@ struct RepairPlan
 
   Point3 seedLps = Point3::Zero(); ///< the seed the lumen was grown from, LPS mm
   bool seedAutomatic = false;      ///< found by FindAorticSeed (no seed was given)
+  bool seedGiven = false;          ///< a seed was given (else seedLps is the automatic one, or 0 with a given lumen)
+  bool lumenGiven = false;         ///< the lumen is the user's (PlanRequest::givenLumen), not grown
+  bool ctGiven = true;             ///< false: planned on a given lumen without a CT
   std::string seedDescription;     ///< what the automatic seed is (FindAorticSeed), else empty
   LumenSegmentation lumen;         ///< its mask is on the input's grid
   CenterlineTree centerlines;
@@ -190,7 +202,10 @@ struct RepairPlan
 };
 
 /// Runs the stages up to `request.through`; see the file comment. Without a seed the aorta is
-/// found first (FindAorticSeed, stage FindSeed; its AlgorithmError when none is found).
+/// found first (FindAorticSeed, stage FindSeed; its AlgorithmError when none is found), unless
+/// the lumen is given (PlanRequest::givenLumen: stage SegmentLumen takes it instead; `ct` may then
+/// be null). Given landmarks (PlanRequest::landmarks) enter after the labelling (ApplyGivenLandmarks).
+/// \throws InputError also when a given lumen forms no aorto-iliac Y (what the labelling found).
 RepairPlan PlanRepair(CtImage::ConstPointer ct,
                       const std::optional<Point3>& seedLps,
                       const PlanRequest& request,

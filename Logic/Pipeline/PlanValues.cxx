@@ -4,6 +4,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "Centerlines/VesselOrigins.h"
 #include "Common/Format.h"
 
 namespace sgp
@@ -71,6 +72,10 @@ const std::vector<std::string>& ReturnValueNames()
     "neckCalcificationArc",
     "hostileNeck",
     "proximalSiteSource",
+    "lumenSource",
+    "aorticBifurcationSource",
+    "rightInternalIliacOriginSource",
+    "leftInternalIliacOriginSource",
     "recommendedDevice",
     "mainBodyDiameter",
     "rightLimbDiameter",
@@ -102,13 +107,18 @@ std::vector<PlanValue> PlanReturnValues(const RepairPlan& plan)
   const auto put = [&](PlanValue v) { byName[v.name] = std::move(v); };
   const LumenSegmentation& lumen = plan.lumen;
   // The seed in RAS, as the CLI's --seed takes it (x and y negated from LPS).
-  put({ "seedUsed", FormatReturnValue(-plan.seedLps.x()) + "," + FormatReturnValue(-plan.seedLps.y()) + "," +
-                      FormatReturnValue(plan.seedLps.z()) });
-  put({ "seedSource", plan.seedAutomatic ? "automatic" : "user" });
-  put({ "lumenVolumeMl", FormatReturnValue(lumen.volumeMl) });
-  put({ "lowerHuUsed", FormatReturnValue(lumen.lowerHu) });
-  put({ "upperHuUsed", FormatReturnValue(lumen.upperHu) });
-  put({ "edgeHuUsed", FormatReturnValue(lumen.edgeHu) });
+  const bool seeded = plan.seedAutomatic || plan.seedGiven; // not with a given lumen alone
+  put({ "seedUsed",
+        seeded ? FormatReturnValue(-plan.seedLps.x()) + "," + FormatReturnValue(-plan.seedLps.y()) + "," +
+                   FormatReturnValue(plan.seedLps.z())
+               : "-1,-1,-1",
+        seeded });
+  put({ "seedSource", plan.seedAutomatic ? "automatic" : plan.seedGiven ? "user" : "none" });
+  // A given lumen has no edge level, and no window without a CT (LumenFromSegmentation.h): -1.
+  put(Number("lumenVolumeMl", lumen.volumeMl));
+  put(Number("lowerHuUsed", lumen.lowerHu));
+  put(Number("upperHuUsed", lumen.upperHu));
+  put(Number("edgeHuUsed", lumen.edgeHu));
   const bool fitted = plan.Reached(PlanStage::StentSurface);
   put({ "acmIterations", std::to_string(fitted ? plan.fit.iterations : 0), fitted });
   put(Boolean("acmConverged", plan.fit.converged, fitted));
@@ -117,6 +127,15 @@ std::vector<PlanValue> PlanReturnValues(const RepairPlan& plan)
     put(Number(m.name, m.value));
   const bool measured = plan.Reached(PlanStage::Measurements);
   put(Text("proximalSiteSource", ToString(plan.measurements.site.source), measured));
+  put(Text("lumenSource", plan.lumenGiven ? "given" : "grown", true));
+  const bool labelled = plan.Reached(PlanStage::Centerlines);
+  put(Text("aorticBifurcationSource", plan.centerlines.givenBifurcationLps ? "given" : "found", labelled));
+  for (int side = 0; side < 2; ++side)
+    put(Text(side == 0 ? "rightInternalIliacOriginSource" : "leftInternalIliacOriginSource",
+             std::isfinite(plan.centerlines.givenInternalIliacAbscissaMm[std::size_t(side)]) ? "given"
+             : std::isfinite(InternalIliacOriginAbscissa(plan.centerlines, side))            ? "found"
+                                                                                             : "notFound",
+             labelled));
   // Decided: a rule fails, or every rule was decided; an undecided neck is not measured.
   put(Boolean("hostileNeck", plan.neck.hostile,
               measured && !plan.neck.checks.empty() && (plan.neck.hostile || plan.neck.determinate)));
