@@ -77,11 +77,12 @@ std::string Normalised(std::string_view text)
   return out;
 }
 
-/// The data's offset when the header (up to its blank line) declares attached, gzip-encoded,
-/// 16-bit signed data in the machine's byte order with no skips; 0 otherwise. A line is a field
+/// The data's offset when the header (up to its blank line) declares attached, gzip-encoded data
+/// of the pixel type asked for — 16-bit signed in the machine's byte order (`bytes` 2), or unsigned
+/// bytes (`bytes` 1, whose byte order does not matter) — with no skips; 0 otherwise. A line is a field
 /// when it has ": " (whatever else it holds, as for NrrdIO); a line without it is a comment, a
 /// key:=value pair, or a header this path declines.
-std::size_t GzipShortDataOffset(std::string_view file)
+std::size_t GzipDataOffset(std::string_view file, int bytes)
 {
   const std::size_t end = file.find("\n\n");
   if (file.substr(0, 4) != "NRRD" || end == std::string_view::npos)
@@ -89,7 +90,7 @@ std::size_t GzipShortDataOffset(std::string_view file)
   const std::string_view header = file.substr(0, end + 1);
   if (header.find('\r') != std::string_view::npos)
     return 0;
-  bool gzip = false, shortType = false, nativeOrder = false;
+  bool gzip = false, typeAsked = false, nativeOrder = bytes == 1;
   for (std::size_t line = header.find('\n') + 1; line < header.size();)
   {
     const std::size_t next = header.find('\n', line);
@@ -108,29 +109,33 @@ std::size_t GzipShortDataOffset(std::string_view file)
     if (field == "encoding")
       gzip = value == "gzip" || value == "gz";
     else if (field == "type")
-      shortType = value == "short" || value == "short int" || value == "signed short" || value == "signed short int" ||
-                  value == "int16" || value == "int16_t";
-    else if (field == "endian")
+      typeAsked = bytes == 2 ? value == "short" || value == "short int" || value == "signed short" ||
+                                 value == "signed short int" || value == "int16" || value == "int16_t"
+                             : value == "uchar" || value == "unsigned char" || value == "uint8" || value == "uint8_t";
+    else if (field == "endian" && bytes > 1)
       nativeOrder = value == (itk::ByteSwapper<short>::SystemIsLittleEndian() ? "little" : "big");
     else if (field == "data file" || field == "datafile" ||
              ((field == "line skip" || field == "lineskip" || field == "byte skip" || field == "byteskip") &&
               value != "0"))
       return 0;
   }
-  return gzip && shortType && nativeOrder ? end + 2 : 0;
+  return gzip && typeAsked && nativeOrder ? end + 2 : 0;
 }
 
 } // namespace
 
-bool InflateGzipNrrdInto(const std::string& path, CtImage& image)
+namespace
+{
+
+/// The file's data inflated into `out` (`bytes` long) when its header declares pixels of
+/// `pixelBytes` (GzipDataOffset).
+bool InflateInto(const std::string& path, char* const out, const std::size_t bytes, int pixelBytes)
 {
   const MappedFile file(path);
   const std::string_view text = file.Text();
-  const std::size_t offset = GzipShortDataOffset(text);
+  const std::size_t offset = GzipDataOffset(text, pixelBytes);
   if (offset == 0)
     return false;
-  char* const out = reinterpret_cast<char*>(image.GetBufferPointer());
-  const std::size_t bytes = image.GetPixelContainer()->Size() * sizeof(CtImage::PixelType);
   // The buffer's pages, mapped writable on the second core ahead of the inflation (their contents
   // untouched, so the race is harmless).
   std::thread mapPages;
@@ -160,6 +165,19 @@ bool InflateGzipNrrdInto(const std::string& path, CtImage& image)
   return result == LIBDEFLATE_SUCCESS && written == bytes && used == text.size() - offset;
 }
 
+} // namespace
+
+bool InflateGzipNrrdInto(const std::string& path, CtImage& image)
+{
+  return InflateInto(path, reinterpret_cast<char*>(image.GetBufferPointer()),
+                     image.GetPixelContainer()->Size() * sizeof(CtImage::PixelType), 2);
+}
+
+bool InflateGzipNrrdInto(const std::string& path, LabelImage& image)
+{
+  return InflateInto(path, reinterpret_cast<char*>(image.GetBufferPointer()), image.GetPixelContainer()->Size(), 1);
+}
+
 } // namespace sgp
 
 #else
@@ -168,6 +186,11 @@ namespace sgp
 {
 
 bool InflateGzipNrrdInto(const std::string&, CtImage&)
+{
+  return false;
+}
+
+bool InflateGzipNrrdInto(const std::string&, LabelImage&)
 {
   return false;
 }

@@ -27,4 +27,8 @@ namespace sgp
 
 bool InflateGzipNrrdInto(const std::string& path, CtImage& image);
 
+/// The same for a label map of unsigned bytes (the plan's own lumen label map, given back as
+/// `--inputLumenSegmentation`: ReadLumenSegmentation.h); the header must declare `unsigned char`.
+bool InflateGzipNrrdInto(const std::string& path, LabelImage& image);
+
 } // namespace sgp

@@ -579,7 +579,7 @@ RepairPlan PlanRepair(CtImage::ConstPointer ct,
   if (request.givenLumen)
   {
     report.Begin("SegmentLumen", "Taking the lumen from the segmentation given");
-    plan.lumen = LumenFromSegmentation(*request.givenLumen, ct.GetPointer(), seedLps, request.givenLumenDescription);
+    plan.lumen = LumenFromSegmentation(request.givenLumen, ct.GetPointer(), seedLps, request.givenLumenDescription);
   }
   else
     SegmentLumen(*ct, plan.seedLps, params, report, plan);

@@ -85,8 +85,9 @@ struct PlanRequest
   GivenLandmarks landmarks;
   /// A lumen the user gave (on its own grid, non-zero = lumen; LumenFromSegmentation.h), taken
   /// instead of region growing; null: grown from the seed. With it the CT may be null: the plan
-  /// then runs on the lumen alone (no outer wall: sized on the lumen, marked estimated).
-  LabelImage::ConstPointer givenLumen;
+  /// then runs on the lumen alone (no outer wall: sized on the lumen, marked estimated). Handed
+  /// over: on the CT's grid its buffer becomes the plan's lumen mask (and is changed).
+  LabelImage::Pointer givenLumen;
   std::string givenLumenDescription; ///< what it is, for messages ("labels 52, 65 of 'x.nii.gz'")
   /// The wall label map (WallLabelMap: lumen, thrombus and wall, calcium), when the plan reaches
   /// the measurements.

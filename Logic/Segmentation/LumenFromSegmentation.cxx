@@ -49,14 +49,25 @@ std::string Extent(const itk::ImageBase<3>& image)
 
 /// The given mask's foreground on the CT's grid, each CT voxel taking its nearest segmentation
 /// voxel (file comment, step 1); only CT voxels within the foreground box's physical extent are
-/// visited.
-LabelImage::Pointer OntoCtGrid(const LabelImage& given, const IndexBox& foreground, const CtImage& ct)
+/// visited. On the CT's own grid the given image itself, its foreground set to 1.
+LabelImage::Pointer OntoCtGrid(const LabelImage::Pointer& given, const IndexBox& foreground, const CtImage& ct)
 {
+  const Affine seg = IndexToLpsMap(*given), grid = IndexToLpsMap(ct);
+  // The same grid (the plan's own label map, a segmentation made on this CT): each voxel is its
+  // own nearest, and the given buffer is the mask (1e-6 mm: the files' printed precision).
+  const itk::Size<3> ctSize = ct.GetLargestPossibleRegion().GetSize();
+  if (given->GetLargestPossibleRegion().GetSize() == ctSize && (seg.M - grid.M).cwiseAbs().maxCoeff() < 1e-6 &&
+      (seg.origin - grid.origin).cwiseAbs().maxCoeff() < 1e-6)
+  {
+    unsigned char* voxels = given->GetBufferPointer();
+    ForEachInBox(foreground, ctSize, [&](long, long image) { voxels[image] = voxels[image] ? 1 : 0; });
+    given->CopyInformation(&ct); // within 1e-6 mm: the CT's own numbers
+    return given;
+  }
   auto out = LabelImage::New();
   out->CopyInformation(&ct);
   out->SetRegions(ct.GetLargestPossibleRegion());
   out->Allocate(true);
-  const Affine seg = IndexToLpsMap(given), grid = IndexToLpsMap(ct);
   const Eigen::Matrix3d ctFromLps = grid.M.inverse();
   // The CT index box spanned by the foreground box's corners (half a voxel beyond its centres).
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
@@ -70,22 +81,21 @@ LabelImage::Pointer OntoCtGrid(const LabelImage& given, const IndexBox& foregrou
     lo = lo.cwiseMin(c);
     hi = hi.cwiseMax(c);
   }
-  const itk::Size<3> ctSize = ct.GetLargestPossibleRegion().GetSize();
   std::array<long, 3> first{}, last{};
   for (int a = 0; a < 3; ++a)
   {
     first[std::size_t(a)] = std::max(0L, static_cast<long>(std::floor(lo[a])));
     last[std::size_t(a)] = std::min(long(ctSize[std::size_t(a)]) - 1, static_cast<long>(std::ceil(hi[a])));
     if (last[std::size_t(a)] < first[std::size_t(a)])
-      throw InputError("The lumen segmentation does not overlap the CT: its lumen lies at " + Extent(given) +
+      throw InputError("The lumen segmentation does not overlap the CT: its lumen lies at " + Extent(*given) +
                        " and the CT spans " + Extent(ct) +
                        "; expected a segmentation of this CT (the same patient and frame).");
   }
   // Segmentation continuous index of CT index c: A c + b.
   const Eigen::Matrix3d A = seg.M.inverse() * grid.M;
   const Eigen::Vector3d b = seg.M.inverse() * (grid.origin - seg.origin);
-  const itk::Size<3> segSize = given.GetLargestPossibleRegion().GetSize();
-  const unsigned char* in = given.GetBufferPointer();
+  const itk::Size<3> segSize = given->GetLargestPossibleRegion().GetSize();
+  const unsigned char* in = given->GetBufferPointer();
   unsigned char* dst = out->GetBufferPointer();
   for (long k = first[2]; k <= last[2]; ++k)
     for (long j = first[1]; j <= last[1]; ++j)
@@ -276,12 +286,12 @@ void WindowFromCt(const MaskGrid& grid,
 
 } // namespace
 
-LumenSegmentation LumenFromSegmentation(const LabelImage& given,
+LumenSegmentation LumenFromSegmentation(const LabelImage::Pointer& given,
                                         const CtImage* ct,
                                         const std::optional<Point3>& seedLps,
                                         const std::string& description)
 {
-  const IndexBox givenBox = ForegroundBox(given);
+  const IndexBox givenBox = ForegroundBox(*given);
   if (givenBox.Empty())
     throw InputError("The lumen segmentation " + description +
                      " holds no lumen voxel; expected a label map of the "
@@ -294,20 +304,16 @@ LumenSegmentation LumenFromSegmentation(const LabelImage& given,
     lumen.mask = OntoCtGrid(given, givenBox, *ct);
   else
   {
-    lumen.mask = LabelImage::New();
-    lumen.mask->CopyInformation(&given);
-    lumen.mask->SetRegions(given.GetLargestPossibleRegion());
-    lumen.mask->Allocate(true);
-    const unsigned char* in = given.GetBufferPointer();
-    unsigned char* out = lumen.mask->GetBufferPointer();
-    const std::size_t n = given.GetLargestPossibleRegion().GetNumberOfPixels();
-    for (std::size_t v = 0; v < n; ++v)
-      out[v] = in[v] ? 1 : 0;
+    // Without a CT the given grid is the plan's, and its image the mask.
+    lumen.mask = given;
+    unsigned char* voxels = given->GetBufferPointer();
+    ForEachInBox(givenBox, given->GetLargestPossibleRegion().GetSize(),
+                 [&](long, long image) { voxels[image] = voxels[image] ? 1 : 0; });
   }
   // Padded so that every foreground voxel has neighbours in the box (the thinning's rule).
   const IndexBox box = ForegroundBox(*lumen.mask, { 3, 3, 3 });
   if (box.Empty())
-    throw InputError("The lumen segmentation " + description + " lies at " + Extent(given) +
+    throw InputError("The lumen segmentation " + description + " lies at " + Extent(*given) +
                      " and no voxel of it falls on the CT's grid (" + Extent(*ct) +
                      "); expected a segmentation of this CT.");
   MaskGrid grid = Crop(*lumen.mask, box);

@@ -23,14 +23,17 @@
 ///     interior's m and σ are reported as the seed statistics; the edge level is NaN.
 ///
 /// Input: `given` on its own grid, non-zero = lumen (LPS geometry from the file); `ct` (HU) or
-/// null; `seedLps` (LPS mm) or empty.
+/// null; `seedLps` (LPS mm) or empty. **`given` is handed over**: where it lies on the CT's grid
+/// (or there is no CT) its buffer becomes the lumen's mask and is changed (1 for lumen, the pieces
+/// left out and the cavities filled) — the re-plan then holds one full-size mask, not three.
 /// Output: LumenSegmentation on the CT's grid (the given grid without a CT); `windowSource` says
 /// where the lumen came from.
 /// Errors (InputError): the segmentation and the CT do not overlap (both extents named, mm); no
 /// voxel of the segmentation falls on the CT's grid; the segmentation is empty.
 ///
 /// Complexity: one pass over the segmentation's foreground box (resampling visits only the CT
-/// voxels of that box's physical extent), then linear work in the lumen's bounding box.
+/// voxels of that box's physical extent), then linear work in the lumen's bounding box. Memory:
+/// no full-size buffer beside `given` on the CT's grid; one (the CT's grid) otherwise.
 #pragma once
 
 #include <optional>
@@ -41,7 +44,7 @@
 namespace sgp
 {
 
-LumenSegmentation LumenFromSegmentation(const LabelImage& given,
+LumenSegmentation LumenFromSegmentation(const LabelImage::Pointer& given,
                                         const CtImage* ct,
                                         const std::optional<Point3>& seedLps,
                                         const std::string& description);

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "AvtSupport.h"
+#include "MaskPhantoms.h"
 #include "Common/ImageGeometry.h"
 #include "IO/ReadCtImage.h"
 #include "IO/ReadLumenSegmentation.h"
@@ -82,9 +83,10 @@ TEST_P(AvtGivenLumen, PlansFromTheSegNrrdWithAndWithoutTheCt)
   request.through = PlanStage::Measurements;
   const RepairPlan own = PlanRepair(ct, seed, request, Params());
 
-  request.givenLumen = file.mask;
   request.givenLumenDescription = file.description;
+  request.givenLumen = testing::CopyMask(*file.mask); // handed over to each plan
   const RepairPlan withCt = PlanRepair(ct, std::nullopt, request, Params());
+  request.givenLumen = file.mask;
   const RepairPlan alone = PlanRepair(nullptr, std::nullopt, request, Params());
   for (const RepairPlan* plan : { &withCt, &alone })
   {

@@ -32,6 +32,17 @@ struct Capsule
 
 /// A label image of the union of capsules, on a grid with the given spacing and direction whose
 /// extent covers them with a margin of 3 mm.
+/// A copy of `image` (its own buffer): for the stages that take a mask over (LumenFromSegmentation).
+inline LabelImage::Pointer CopyMask(const LabelImage& image)
+{
+  auto copy = LabelImage::New();
+  copy->CopyInformation(&image);
+  copy->SetRegions(image.GetLargestPossibleRegion());
+  copy->Allocate();
+  std::copy_n(image.GetBufferPointer(), image.GetLargestPossibleRegion().GetNumberOfPixels(), copy->GetBufferPointer());
+  return copy;
+}
+
 inline LabelImage::Pointer PaintCapsules(const std::vector<Capsule>& capsules,
                                          const std::array<double, 3>& spacing,
                                          const Eigen::Matrix3d& direction = Eigen::Matrix3d::Identity())

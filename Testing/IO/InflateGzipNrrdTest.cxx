@@ -134,6 +134,33 @@ TEST_F(InflateGzipNrrdTest, ShortGzipNrrd_ReadsItksVoxels)
   EXPECT_EQ(itk->GetLargestPossibleRegion(), viaReader->GetLargestPossibleRegion());
 }
 
+/// A byte label map (the plan's own, given back: ReadLumenSegmentation): inflated as ITK reads it;
+/// a short volume is not taken for one, nor a byte map for a CT.
+TEST_F(InflateGzipNrrdTest, ByteLabelMap_ReadsItksVoxels)
+{
+  auto labels = LabelImage::New();
+  labels->CopyInformation(MakeVolume());
+  labels->SetRegions(MakeVolume()->GetLargestPossibleRegion());
+  labels->Allocate();
+  for (std::size_t v = 0; v < labels->GetLargestPossibleRegion().GetNumberOfPixels(); ++v)
+    labels->GetBufferPointer()[v] = static_cast<unsigned char>((v * 7919) % 253);
+  const fs::path path = folder / "labels.nrrd";
+  Write(labels.GetPointer(), path, true);
+  auto fast = LabelImage::New();
+  fast->CopyInformation(labels);
+  fast->SetRegions(labels->GetLargestPossibleRegion());
+  fast->Allocate(true);
+  ASSERT_TRUE(InflateGzipNrrdInto(path.string(), *fast));
+  EXPECT_TRUE(std::equal(labels->GetBufferPointer(),
+                         labels->GetBufferPointer() + labels->GetLargestPossibleRegion().GetNumberOfPixels(),
+                         fast->GetBufferPointer()));
+  CtImage::Pointer wrongType = ReadWithItk(path);
+  EXPECT_FALSE(InflateGzipNrrdInto(path.string(), *wrongType)); // bytes are not HU
+  const fs::path volume = folder / "volume.nrrd";
+  Write(MakeVolume().GetPointer(), volume, true);
+  EXPECT_FALSE(InflateGzipNrrdInto(volume.string(), *fast)); // HU are not bytes
+}
+
 TEST_F(InflateGzipNrrdTest, CommentsAndKeyValuePairs_StillRead)
 {
   const fs::path path = EditedHeader("comments.nrrd", "", "# a comment: with a colon\nmodality:=CT\n");
@@ -169,7 +196,7 @@ TEST_F(InflateGzipNrrdTest, OtherFiles_DeclinedAndReadByItk)
     WriteBytes(crlf, converted + bytes.substr(end + 2));
   }
   for (const fs::path& path : { folder / "raw.nrrd", folder / "float.nrrd", folder / "detached.nhdr", skip, lines,
-                                 upperSkip, upperDataFile, keyValueLike, big, crlf })
+                                upperSkip, upperDataFile, keyValueLike, big, crlf })
   {
     SCOPED_TRACE(path.filename().string());
     bool read = true;

@@ -13,8 +13,10 @@
 
 #include "Centerlines/GivenLandmarks.h"
 #include "Centerlines/VesselOrigins.h"
+#include "Common/ImageGeometry.h"
 #include "Common/Errors.h"
 #include "Segmentation/LumenFromSegmentation.h"
+#include "MaskPhantoms.h"
 #include "YPhantom.h"
 
 namespace sgp
@@ -79,7 +81,7 @@ TEST(LumenFromSegmentation, EachCtVoxelTakesItsNearestSegmentationVoxel)
   // The ball's centre near the CT's index (25.3, 24.6, 35.2): wholly inside its 50 × 50 × 70 mm.
   const Point3 ctOrigin = -(RotationZ(30.0) * Point3(25.3, 24.6, 35.2));
   auto ct = MakeImage<CtImage>({ 50, 50, 70 }, { 1.0, 1.0, 1.0 }, ctOrigin, RotationZ(30.0));
-  const LumenSegmentation lumen = LumenFromSegmentation(*given, ct.GetPointer(), std::nullopt, "test");
+  const LumenSegmentation lumen = LumenFromSegmentation(given, ct.GetPointer(), std::nullopt, "test");
   ASSERT_TRUE(lumen.mask);
   EXPECT_EQ(lumen.mask->GetLargestPossibleRegion(), ct->GetLargestPossibleRegion());
   long mismatches = 0, lumenVoxels = 0;
@@ -102,20 +104,40 @@ TEST(LumenFromSegmentation, EachCtVoxelTakesItsNearestSegmentationVoxel)
   EXPECT_NE(lumen.windowSource.find("no region growing"), std::string::npos) << lumen.windowSource;
 }
 
+/// On the CT's own grid (the plan's label map given back) the mask is copied voxel for voxel.
+TEST(LumenFromSegmentation, OnTheCtsGridEveryVoxelKept)
+{
+  auto given = MakeImage<LabelImage>({ 40, 30, 20 }, { 0.7, 0.8, 2.5 }, Point3(-5, 3, -40), RotationZ(30.0));
+  PaintBalls(*given, { { IndexToLps(*given, { { 20, 15, 10 } }), 7.0 } });
+  auto ct = MakeImage<CtImage>({ 40, 30, 20 }, { 0.7, 0.8, 2.5 }, Point3(-5, 3, -40), RotationZ(30.0));
+  const LabelImage::Pointer before = testing::CopyMask(*given);
+  const LumenSegmentation lumen = LumenFromSegmentation(given, ct.GetPointer(), std::nullopt, "test");
+  EXPECT_EQ(lumen.mask.GetPointer(), given.GetPointer()); // handed over: no second full-size mask
+  long differ = 0, count = 0;
+  for (std::size_t v = 0; v < ct->GetLargestPossibleRegion().GetNumberOfPixels(); ++v)
+  {
+    differ += lumen.mask->GetBufferPointer()[v] != before->GetBufferPointer()[v];
+    count += before->GetBufferPointer()[v];
+  }
+  EXPECT_GT(count, 100);
+  EXPECT_EQ(differ, 0);
+}
+
 /// Two pieces: the larger is kept without a seed, the seed's with one; the warning names the
 /// pieces and the volume left out.
 TEST(LumenFromSegmentation, KeepsOnePieceAndNamesTheOthers)
 {
   auto given = MakeImage<LabelImage>({ 80, 40, 40 }, { 1.0, 1.0, 1.0 }, Point3(0, 0, 0));
   PaintBalls(*given, { { Point3(20, 20, 20), 12.0 }, { Point3(60, 20, 20), 5.0 } });
-  const LumenSegmentation larger = LumenFromSegmentation(*given, nullptr, std::nullopt, "test");
+  const LumenSegmentation larger = LumenFromSegmentation(testing::CopyMask(*given), nullptr, std::nullopt, "test");
   EXPECT_NEAR(larger.volumeMl, 4.0 / 3.0 * M_PI * 12.0 * 12.0 * 12.0 / 1000.0, 0.2);
   ASSERT_EQ(larger.warnings.size(), 1u);
   EXPECT_NE(larger.warnings[0].find("2 separate pieces"), std::string::npos) << larger.warnings[0];
   EXPECT_NE(larger.warnings[0].find("the largest"), std::string::npos) << larger.warnings[0];
   EXPECT_NE(larger.warnings[0].find("0.52 mL"), std::string::npos) << larger.warnings[0]; // the small ball
   EXPECT_EQ(larger.mask->GetPixel({ { 60, 20, 20 } }), 0);
-  const LumenSegmentation seeded = LumenFromSegmentation(*given, nullptr, Point3(60, 20, 20), "test");
+  const LumenSegmentation seeded =
+    LumenFromSegmentation(testing::CopyMask(*given), nullptr, Point3(60, 20, 20), "test");
   EXPECT_EQ(seeded.mask->GetPixel({ { 60, 20, 20 } }), 1);
   EXPECT_EQ(seeded.mask->GetPixel({ { 20, 20, 20 } }), 0);
   EXPECT_NE(seeded.warnings[0].find("holding the seed"), std::string::npos) << seeded.warnings[0];
@@ -128,7 +150,7 @@ TEST(LumenFromSegmentation, FillsCavities)
   PaintBalls(*given, { { Point3(20, 20, 20), 12.0 } });
   for (long k = 18; k <= 22; ++k)
     given->SetPixel({ { 20, 20, k } }, 0);
-  const LumenSegmentation lumen = LumenFromSegmentation(*given, nullptr, std::nullopt, "test");
+  const LumenSegmentation lumen = LumenFromSegmentation(given, nullptr, std::nullopt, "test");
   EXPECT_EQ(lumen.mask->GetPixel({ { 20, 20, 20 } }), 1);
   EXPECT_TRUE(lumen.warnings.empty());
 }
@@ -145,7 +167,7 @@ TEST(LumenFromSegmentation, WindowFromTheCtInside)
   for (std::size_t v = 0; v < ct->GetLargestPossibleRegion().GetNumberOfPixels(); ++v)
     if (given->GetBufferPointer()[v])
       ct->GetBufferPointer()[v] = static_cast<short>(300 + (v % 3 == 0 ? 20 : v % 3 == 1 ? -20 : 0));
-  const LumenSegmentation lumen = LumenFromSegmentation(*given, ct.GetPointer(), std::nullopt, "test");
+  const LumenSegmentation lumen = LumenFromSegmentation(given, ct.GetPointer(), std::nullopt, "test");
   EXPECT_NEAR(lumen.seedMedianHu, 300.0, 1e-9);
   EXPECT_NEAR(lumen.seedSigmaHu, 1.4826 * 20.0, 1e-9); // the MAD of ±20 and 0 in thirds
   const LumenSegmentation grown = GrowLumenRegion(*ct, Point3(30, 30, 30), RegionGrowingParams{});
@@ -163,7 +185,7 @@ TEST(LumenFromSegmentation, NoOverlapNamesBothExtents)
   auto ct = MakeImage<CtImage>({ 20, 20, 20 }, { 1.0, 1.0, 1.0 }, Point3(0, 0, 0));
   try
   {
-    LumenFromSegmentation(*given, ct.GetPointer(), std::nullopt, "test");
+    LumenFromSegmentation(given, ct.GetPointer(), std::nullopt, "test");
     FAIL() << "no error";
   }
   catch (const InputError& e)
@@ -174,7 +196,7 @@ TEST(LumenFromSegmentation, NoOverlapNamesBothExtents)
     EXPECT_NE(what.find("x -0.5 to 19.5"), std::string::npos) << what;   // the CT's
   }
   auto empty = MakeImage<LabelImage>({ 20, 20, 20 }, { 1.0, 1.0, 1.0 }, Point3(0, 0, 0));
-  EXPECT_THROW(LumenFromSegmentation(*empty, ct.GetPointer(), std::nullopt, "test"), InputError);
+  EXPECT_THROW(LumenFromSegmentation(empty, ct.GetPointer(), std::nullopt, "test"), InputError);
 }
 
 /// A Y of straight centerlines (YPhantom.h: B at z = 40, iliacs to (∓30, 0, −40)) with two branches

@@ -22,6 +22,7 @@
 #include "IO/ReadLumenSegmentation.h"
 #include "Phantom/AorticPhantom.h"
 #include "Pipeline/PlanRepair.h"
+#include "MaskPhantoms.h"
 #include "PipelineSupport.h"
 #include "ShippedPlanParams.h"
 #include "TemporaryFolder.h"
@@ -100,7 +101,7 @@ TEST(GivenLumen, RoundTripPlansTheSame)
   const AorticPhantom phantom = GenerateAorticPhantom(p);
   const RepairPlan grown = Plan(phantom);
   PlanRequest request;
-  request.givenLumen = grown.lumen.mask;
+  request.givenLumen = testing::CopyMask(*grown.lumen.mask); // handed over
   request.givenLumenDescription = "the plan's own lumen label map";
   const RepairPlan given = PlanRepair(phantom.ct, std::nullopt, request, testing::ShippedPlanParams());
   EXPECT_TRUE(given.lumenGiven);
