@@ -4,6 +4,8 @@
 #pragma once
 
 #include <array>
+#include <limits>
+#include <string>
 #include <stdexcept>
 
 #include <Eigen/Geometry>
@@ -12,6 +14,15 @@
 
 namespace sgp::testing
 {
+
+/// The truth's landmark called `name` (NaN when absent).
+inline Point3 TruthLandmark(const PhantomTruth& truth, const std::string& name)
+{
+  for (const PhantomLandmark& l : truth.landmarks)
+    if (l.name == name)
+      return l.lps;
+  return Point3::Constant(std::numeric_limits<double>::quiet_NaN());
+}
 
 /// An oblique grid with one axis flipped (det = −1): rotated 30° about z and 20° about x, j
 /// reversed — what a gantry-tilted scan stored in a flipped order looks like.

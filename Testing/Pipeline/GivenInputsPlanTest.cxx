@@ -23,6 +23,7 @@
 #include "Phantom/AorticPhantom.h"
 #include "Pipeline/PlanRepair.h"
 #include "MaskPhantoms.h"
+#include "PhantomTestSupport.h"
 #include "PipelineSupport.h"
 #include "ShippedPlanParams.h"
 #include "TemporaryFolder.h"
@@ -31,14 +32,6 @@ namespace sgp
 {
 namespace
 {
-
-Point3 TruthLandmark(const PhantomTruth& truth, const std::string& name)
-{
-  for (const PhantomLandmark& l : truth.landmarks)
-    if (l.name == name)
-      return l.lps;
-  return Point3::Constant(std::numeric_limits<double>::quiet_NaN());
-}
 
 RepairPlan Plan(const AorticPhantom& phantom, const PlanRequest& request = {})
 {
@@ -247,9 +240,9 @@ TEST(GivenLandmarks, CorrectTheSiteAndAWrongInternalIliac)
     << "the decoy must be taken for the internal iliac for this test to mean anything";
 
   PlanRequest request;
-  const Point3 site = TruthLandmark(phantom.truth, "proximalImplantationSite");
+  const Point3 site = testing::TruthLandmark(phantom.truth, "proximalImplantationSite");
   request.lowestRenalOstiumLps = site + Point3(-t.proximalNeckDiameter / 2, 0.0, 0.0); // on the right wall
-  const Point3 origin = TruthLandmark(phantom.truth, "rightIliacBifurcation");
+  const Point3 origin = testing::TruthLandmark(phantom.truth, "rightIliacBifurcation");
   request.landmarks.internalIliacOriginLps[0] = origin + Point3(0.0, 3.0, 0.0);
   const RepairPlan corrected = Plan(phantom, request);
   const Measurements& m = corrected.measurements;

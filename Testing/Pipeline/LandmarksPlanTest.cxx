@@ -13,6 +13,7 @@
 #include "Phantom/AorticPhantom.h"
 #include "Pipeline/PlanRepair.h"
 #include "Pipeline/PlanValues.h"
+#include "PhantomTestSupport.h"
 #include "PipelineSupport.h"
 #include "ShippedPlanParams.h"
 
@@ -20,15 +21,6 @@ namespace sgp
 {
 namespace
 {
-
-/// The truth's landmark called `name` (NaN when absent).
-Point3 TruthLandmark(const PhantomTruth& truth, const std::string& name)
-{
-  for (const PhantomLandmark& l : truth.landmarks)
-    if (l.name == name)
-      return l.lps;
-  return Point3::Constant(std::numeric_limits<double>::quiet_NaN());
-}
 
 bool Named(const CenterlineTree& tree, const std::string& name)
 {
@@ -82,7 +74,7 @@ TEST_P(RenalVariants, LowestRenalNamedAndItsLowerEdgeWithin2mm)
   const ProximalSite site = FindProximalSite(tree);
   ASSERT_EQ(site.source, ProximalSiteSource::Renal) << site.warning;
   EXPECT_EQ(site.renal, "rightRenal"); // the phantom's right renal is the lower one
-  const Point3 truth = TruthLandmark(phantom.truth, "proximalImplantationSite");
+  const Point3 truth = testing::TruthLandmark(phantom.truth, "proximalImplantationSite");
   const double along = ProjectOntoCenterline(tree.aorta, truth);
   std::cout << v.name << ": site " << site.abscissaMm - along << " mm from the truth along the aorta" << std::endl;
   EXPECT_NEAR(site.abscissaMm, along, 2.0);
@@ -209,7 +201,7 @@ TEST_F(ChestScanWithoutRenals, WithTheUsersPoint_TheNeckIsMeasured)
 {
   PlanRequest request;
   // The truth's site on the right aortic wall, as a user clicks it.
-  const Point3 site = TruthLandmark(phantom->truth, "proximalImplantationSite");
+  const Point3 site = testing::TruthLandmark(phantom->truth, "proximalImplantationSite");
   request.lowestRenalOstiumLps = site + Point3(-phantom->truth.sizing.proximalNeckDiameter / 2, 0.0, 0.0);
   const RepairPlan withPoint = PlanRepair(phantom->ct, phantom->truth.seedLps, request, testing::ShippedPlanParams());
   const Measurements& m = withPoint.measurements;
@@ -281,7 +273,7 @@ TEST_P(IliacVariants, InternalIliacOriginsAndIliacLengthsWithin3mm)
   for (int side = 0; side < 2; ++side)
   {
     const std::string s = side == 0 ? "right" : "left";
-    const Point3 origin = TruthLandmark(phantom.truth, s + "IliacBifurcation");
+    const Point3 origin = testing::TruthLandmark(phantom.truth, s + "IliacBifurcation");
     const double length = m.Value(s + "IliacLength");
     const double expected = side == 0 ? truth.rightIliacLength : truth.leftIliacLength;
     std::cout << v.name << " " << s << ": iliac length " << length << " (truth " << expected << "), origin "
