@@ -87,6 +87,8 @@ int main(int argc, char* argv[])
       request.landmarks.internalIliacOriginLps[1] = RasToLps(leftInternalIliacOrigin);
     // The input volume named as the lumen segmentation too: the plan runs on the segmentation alone.
     const bool ctGiven = inputLumenSegmentation.empty() || inputLumenSegmentation != inputVolume;
+    if (!ctGiven)
+      RequireNoCtOutputs(paths);
     if (inputLumenSegmentation.empty() && !lumenLabels.empty())
       PrintWarnings({ "lumenLabels (" + lumenLabels +
                       ") is used only with inputLumenSegmentation, which was not given; the lumen is grown from the "

@@ -151,6 +151,22 @@ void ValidatePointArguments(int argc, const char* const argv[], const std::vecto
   }
 }
 
+void RequireNoCtOutputs(const PlanOutputPaths& paths)
+{
+  std::string asked;
+  for (const auto& [name, path] :
+       { std::pair<const char*, const std::string*>{ "outputWallLabelMap", &paths.wallLabelMap },
+         { "outputOuterWallModel", &paths.outerWallModel },
+         { "outputReportHtml", &paths.reportHtml },
+         { "outputStraightenedVolume", &paths.straightenedVolume },
+         { "outputStraightenedLeftVolume", &paths.straightenedLeftVolume } })
+    if (!path->empty())
+      asked += (asked.empty() ? "" : ", ") + std::string(name);
+  if (!asked.empty())
+    throw InputError("The input volume is the lumen segmentation itself, so there is no CT, and " + asked +
+                     " show or trace the CT; give the CT as the input volume, or leave them out.");
+}
+
 void ValidateParameters(const std::string& inputVolume,
                         const std::vector<float>& seed,
                         const RegionGrowingParams& params,

@@ -11,6 +11,7 @@
 #include "Centerlines/SkeletonGraph.h"
 #include "Common/Types.h"
 #include "Device/SelectDevice.h"
+#include "IO/WritePlanOutputs.h"
 #include "Segmentation/GrowLumenRegion.h"
 #include "Stent/ActiveContour.h"
 
@@ -78,6 +79,11 @@ double CheckDeploymentOffset(double deploymentOffsetMm);
 /// rejects it, and this check, run on argv after PARSE_ARGS, makes both builds reject it alike.
 /// \throws InputError naming the flag and the text.
 void ValidatePointArguments(int argc, const char* const argv[], const std::vector<std::string>& pointFlags);
+
+/// Planning on a lumen segmentation without a CT (the input volume is the segmentation itself):
+/// the outputs that show or trace the CT — the wall label map, the outer wall model, the visual
+/// report and the straightened volumes — cannot be made. \throws InputError naming those asked for.
+void RequireNoCtOutputs(const PlanOutputPaths& paths);
 
 /// Checks the inputs a run needs: an input volume, a seed of three numbers, and parameters in
 /// range. \throws InputError naming the value and what was expected.

@@ -197,6 +197,10 @@ def main():
     bad_case(cli, workdir, "origin-wrong-side", volume,
              seed_args + ["--rightInternalIliacOrigin", seed_text(origin_ras)],
              ["rightInternalIliacOrigin", "on the patient's left"])
+    bad_case(cli, workdir, "ct-outputs-without-a-ct", lumen_path,
+             ["--inputLumenSegmentation", lumen_path, "--outputReportHtml", "{outdir}/report.html",
+              "--outputWallLabelMap", "{outdir}/wall.nrrd"],
+             ["there is no CT", "outputWallLabelMap, outputReportHtml"])
     bad_case(cli, workdir, "landmark-not-numbers", volume, seed_args + ["--aorticBifurcation", "a,b,c"],
              ["aorticBifurcation", "a,b,c"])
 
