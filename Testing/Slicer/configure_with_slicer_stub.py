@@ -36,6 +36,13 @@ Slicer cannot be installed here, so this is how the Slicer branch of the CMake c
    do not), while each CLI's test binary, built with -DSGP_BUILD_GTESTS=ON, links and passes;
    the tests that need Chromium, Snakemake, Slurm or pyflakes are registered to report a missing
    tool as skipped (run_if_tools.py, SKIP_RETURN_CODE 77), and nothing else needs one.
+   Issue 45 item 5, as SEM's GenerateCLP at the commit Slicer 5.8 pins: the generated header brings
+   in nothing of the project (no CLPSupport.h, no sgp::clp; planted: a file that uses sgp::clp
+   with only the CLP header does not compile); every vector, point and region parameter is
+   declared empty and gets its values, the XML default included, only from PARSE_ARGS (a probe
+   built from the XML's parameters, no name written here); the arguments are reordered before
+   TCLAP (flags first, positionals last), so an unknown flag's error names ct.nrrd, and the Slicer
+   build's registered cli.Help, cli.UnknownFlag and cli.UnknownFlagMessage pass.
 6. With --standalone-build: that (standalone) build found Debian's nlohmann JSON, TCLAP,
    /usr/bin/python3, GoogleTest and Google Benchmark.
 7. Planted defects make the checks fail: a missing script and missing metadata stop the stub; a
@@ -48,6 +55,7 @@ import argparse
 import contextlib
 import fcntl
 import glob
+import importlib.util
 import json
 import os
 import re
@@ -299,6 +307,80 @@ def check_runs(build, workdir):
           and "Cannot read" not in lines[0], "exit %s, stderr %r" % (outside.returncode, outside.stderr[-500:]))
 
 
+def compile_with_clp_header(build, source, unit, output):
+    """Compile a unit against the stub build's generated CLP headers: link it to output, or only check it."""
+    includes = ["-I" + os.path.join(build, "CLI"), "-I" + os.path.join(source, "CLI"),
+                "-I" + os.path.join(build, "slicer-stub", "tclap", "include"),
+                "-I" + os.path.join(STUB, "SlicerExecutionModel", "ModuleDescriptionParser")]
+    return run(["c++", "-std=c++17", *includes, unit, *(["-o", output] if output else ["-fsyntax-only"])], timeout=600)
+
+
+def check_nothing_of_the_project(args, build, source, header, text):
+    """SEM's header includes TCLAP and ModuleProcessInformation.h only: sgp::clp must be included."""
+    check("the generated header brings in nothing of the project (no CLPSupport.h, no sgp::clp)",
+          "CLPSupport" not in text and "sgp::" not in text)
+    planted = os.path.join(args.workdir, "planted-implicit-clp-support")
+    os.makedirs(planted, exist_ok=True)
+    use = "int main()\n{\n  return static_cast<int>(sgp::clp::SplitStrings(\"1,2\").size()) - 2;\n}\n"
+    for name, includes in (("without", '#include "%s"\n' % header),
+                           ("with", '#include "%s"\n#include "CLPSupport.h"\n' % header)):
+        unit = os.path.join(planted, "%s.cxx" % name)
+        with open(unit, "w") as f:
+            f.write(includes + use)
+        result = compile_with_clp_header(build, source, unit, None)
+        if name == "without":
+            check("planted defect, a file using sgp::clp with only the CLP header, does not compile (as under SEM)",
+                  result.returncode != 0 and "clp" in result.stderr, result.stderr[-800:])
+        else:
+            check("  ... and the same file including CLPSupport.h itself compiles", result.returncode == 0,
+                  result.stderr[-800:])
+
+
+def check_vectors_filled_by_parsing(args, build, source):
+    """Each vector, point and region parameter with an XML default: empty after GENERATE_DECLARE, its
+    default's items after PARSE_ARGS (SEM declares a <name>Temp string, split when parsing)."""
+    spec = importlib.util.spec_from_file_location("sgp_generate_clp", os.path.join(source, "CMake", "GenerateCLP.py"))
+    generator = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(generator)
+    for cli in ("StentGraftSimulation", "SyntheticAorticPhantom"):
+        _, _, params = generator.parse_xml(os.path.join(source, "CLI", cli + ".xml"))
+        vectors = [p for p in params if not p.is_return and p.default and not p.multiple and
+                   (p.tag.endswith("-vector") or p.tag in ("point", "region"))]
+        positionals = [p for p in params if p.index is not None]
+        declared = "".join('  if (!%s.empty()) { std::cout << "declared %s: " << %s.size() << " items\\n"; ++wrong; }\n'
+                           % (p.name, p.name, p.name) for p in vectors)
+        parsed = "".join('  if (%s.size() != %d) { std::cout << "parsed %s: " << %s.size() << " items\\n"; ++wrong; }\n'
+                         % (p.name, len([v for v in p.default.split(",") if v.strip()]), p.name, p.name)
+                         for p in vectors)
+        probe = os.path.join(args.workdir, "probe-vectors-" + cli)
+        os.makedirs(probe, exist_ok=True)
+        unit = os.path.join(probe, "probe.cxx")
+        with open(unit, "w") as f:
+            f.write('#include "%sCLP.h"\n' % cli +
+                    "int Declared()\n{\n  int wrong = 0;\n  GENERATE_DECLARE;\n" + declared + "  return wrong;\n}\n"
+                    "int Parsed(int argc, char* argv[])\n{\n  int wrong = 0;\n  PARSE_ARGS;\n" + parsed +
+                    "  return wrong;\n}\n"
+                    "int main(int argc, char* argv[])\n{\n  return Declared() + Parsed(argc, argv) ? 1 : 0;\n}\n")
+        built = compile_with_clp_header(build, source, unit, os.path.join(probe, "probe"))
+        ran = built
+        if built.returncode == 0:
+            placeholders = ["positional%d" % i for i in range(len(positionals))]
+            ran = run([os.path.join(probe, "probe")] + placeholders, timeout=60)
+        check("%s: its %d vector parameters with a default are declared empty and filled by PARSE_ARGS (as SEM's)"
+              % (cli, len(vectors)), vectors and ran.returncode == 0,
+              built.stderr[-800:] if built.returncode else ran.stdout[-800:] + ran.stderr[-800:])
+
+
+def check_registered_flag_tests(args, build):
+    """The Slicer build's own cli.Help, cli.UnknownFlag and cli.UnknownFlagMessage, run by CTest there."""
+    ctest = os.path.join(os.path.dirname(args.cmake), "ctest")
+    ran = run([ctest if os.path.isfile(ctest) else "ctest", "-R", r"^cli\.(Help|UnknownFlag|UnknownFlagMessage)$",
+               "--output-on-failure"], cwd=build, timeout=300)
+    check("the Slicer build's cli.Help, cli.UnknownFlag and cli.UnknownFlagMessage pass (CTest in the stub build)",
+          ran.returncode == 0 and "100% tests passed, 0 tests failed out of 3" in ran.stdout,
+          (ran.stdout + ran.stderr)[-2500:])
+
+
 def check_semantics_of_real_sem(args, build, source):
     """Issue 33 items 2-4 and 6: what SEM's GenerateCLP and SEMMacroBuildCLI do beyond the build."""
     cli_dir = os.path.join(build, CLI_DIR)
@@ -315,18 +397,23 @@ def check_semantics_of_real_sem(args, build, source):
         check("%s.xml is installed beside the launcher" % cli,
               any(path == xml and destination.endswith(CLI_DIR) for destination, path in installed))
 
-    for label, extra in (("an unknown flag", ["--noSuchFlag", "3"]), ("a bad enumeration", ["--acmMode", "bogus"])):
+    # SEM hands TCLAP the flags first: the unknown switch is taken for the input volume, and the
+    # error names ct.nrrd; the enumeration's error names its flag.
+    for label, extra, first in (("an unknown flag", ["--noSuchFlag", "3"], "PARSE ERROR: Argument: ct.nrrd"),
+                                ("a bad enumeration", ["--acmMode", "bogus"], "PARSE ERROR: Argument: (--acmMode)")):
         bad = run([simulation, "ct.nrrd", "--seed", "0,0,0"] + extra, cwd=cli_dir, timeout=60)
         lines = stderr_lines(bad)
-        check("%s: TCLAP's PARSE ERROR and the usage, exit 1, as under SEM's GenerateCLP" % label,
-              bad.returncode == 1 and lines and lines[0].startswith("PARSE ERROR:") and len(lines) > 3,
+        check("%s: TCLAP's PARSE ERROR (%s) and the usage, exit 1, as under SEM's GenerateCLP" % (label, first),
+              bad.returncode == 1 and lines and lines[0] == first and len(lines) > 3,
               "exit %s, stderr %r" % (bad.returncode, bad.stderr[:300]))
 
     headers = [os.path.join(build, "CLI", n + "CLP.h") for n in ("StentGraftSimulation", "SyntheticAorticPhantom")]
     text = open(headers[0]).read()
     check("the generated header includes ModuleProcessInformation.h and defines its symbols out of line",
           '#include "ModuleProcessInformation.h"' in text and
-          'extern "C" Module_EXPORT char XMLModuleDescription[] = ' in text and "void splitString(" in text)
+          'extern "C" {\nModule_EXPORT char XMLModuleDescription[] = ' in text and "void splitString(" in text)
+    check_nothing_of_the_project(args, build, source, headers[0], text)
+    check_vectors_filled_by_parsing(args, build, source)
     # Two CLP headers in one binary: "multiple definition", as with SEM's; one alone links.
     planted = os.path.join(args.workdir, "planted-two-clp-headers")
     os.makedirs(planted, exist_ok=True)
@@ -504,10 +591,12 @@ def main():
                       elf_type(library), bool(re.search(r"\bT ModuleEntryPoint$", symbols, re.M)),
                       re.findall(r"\[(.*?)\]", needed)))
         header = os.path.join(build, "CLI", "StentGraftSimulationCLP.h")
+        text = open(header).read() if os.path.exists(header) else ""
         check("the stub's GenerateCLP parses points with atof, as SEM's does",
-              os.path.exists(header) and "sgp_sem::SplitWithAtof<float>(seedArg.getValue()" in open(header).read())
+              "seedTemp = seedArg.getValue();" in text and "seed.emplace_back(atof(word.c_str()));" in text)
         check_runs(build, args.workdir)
         check_semantics_of_real_sem(args, build, source)
+        check_registered_flag_tests(args, build)
 
     if args.standalone_build:
         check_standalone(args.standalone_build)
