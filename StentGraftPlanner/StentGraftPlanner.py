@@ -8,9 +8,13 @@ by component), the order list beside the anatomy's lengths it was chosen from, t
 recommendation and the results table (every value with its wall: outer wall or lumen) in the panel,
 and the diameter profile in a plot.
 
+After a run the four landmarks the CLI takes as inputs can be dragged; Re-plan then runs again from
+them and from the run's own lumen (or the lumen segment as edited in Segment Editor), and lists what
+changed.
+
 This file holds only what needs Slicer; the settings, the CLI parameter dictionary, the start and
-the following of a CLI run, the reading of the CLI's results and the colours are in
-StentGraftPlannerLib (plain Python, tested in CTest).
+the following of a CLI run, the reading of the CLI's results, the re-plan's parameters and change
+list and the colours are in StentGraftPlannerLib (plain Python, tested in CTest).
 """
 
 import json
@@ -31,7 +35,15 @@ from slicer.ScriptedLoadableModule import (
 )
 from slicer.util import VTKObservationMixin
 
-from StentGraftPlannerLib import Appearance, CliRun, Outcome, Results, Settings
+from StentGraftPlannerLib import Appearance, CliRun, Outcome, Replan, Results, Settings
+
+#: Parameter-node strings of the last completed run, which Re-plan compares with (saved with the scene):
+#: its editable landmarks (Replan.landmarksToText), what the panel showed (Replan.resultsSnapshot, JSON)
+#: and the fingerprint of its lumen segment (Replan.lumenFingerprint).
+LAST_RUN_LANDMARKS, LAST_RUN_RESULTS, LAST_RUN_LUMEN = "lastRunLandmarks", "lastRunResults", "lastRunLumen"
+
+#: The name of the lumen's segment in the panel's segmentation (Appearance.SEGMENTS).
+LUMEN_SEGMENT = Appearance.SEGMENTS[0][0]
 
 
 class StentGraftPlanner(ScriptedLoadableModule):
@@ -60,6 +72,8 @@ class StentGraftPlanner(ScriptedLoadableModule):
 def _setWidgetValue(widget, value):
     if isinstance(widget, ctk.ctkPathLineEdit):
         widget.currentPath = value
+    elif isinstance(widget, qt.QLineEdit):
+        widget.text = value
     elif isinstance(widget, qt.QComboBox):
         if widget.findText(value) < 0:
             widget.addItem(value)
@@ -71,6 +85,8 @@ def _setWidgetValue(widget, value):
 def _widgetValue(widget):
     if isinstance(widget, ctk.ctkPathLineEdit):
         return widget.currentPath
+    if isinstance(widget, qt.QLineEdit):
+        return widget.text
     if isinstance(widget, qt.QComboBox):
         return widget.currentText
     return widget.value
@@ -79,6 +95,8 @@ def _widgetValue(widget):
 def _changeSignal(widget):
     if isinstance(widget, ctk.ctkPathLineEdit):
         return "currentPathChanged(QString)"
+    if isinstance(widget, qt.QLineEdit):
+        return "textChanged(QString)"
     if isinstance(widget, qt.QComboBox):
         return "currentIndexChanged(int)"
     if isinstance(widget, qt.QSpinBox):
@@ -104,8 +122,8 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
         uiWidget.setMRMLScene(slicer.mrmlScene)
         self.logic = StentGraftPlannerLogic()
 
-        self.ui.seedPlaceWidget.placeMultipleMarkups = slicer.qSlicerMarkupsPlaceWidget.ForcePlaceSingleMarkup
-        self.ui.lowestRenalPlaceWidget.placeMultipleMarkups = slicer.qSlicerMarkupsPlaceWidget.ForcePlaceSingleMarkup
+        for placeWidget in self._placeWidgets().values():
+            placeWidget.placeMultipleMarkups = slicer.qSlicerMarkupsPlaceWidget.ForcePlaceSingleMarkup
         self.ui.deviceFamilyComboBox.addItems([Settings.AUTO_DEVICE] + self.logic.deviceFamilies())
 
         self.addObserver(slicer.mrmlScene, slicer.mrmlScene.StartCloseEvent, self.onSceneStartClose)
@@ -116,6 +134,7 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
             widget = getattr(self.ui, setting.widget)
             widget.connect(_changeSignal(widget), self.updateParameterNodeFromGUI)
         self.ui.applyButton.connect("clicked(bool)", self.onApplyButton)
+        self.ui.replanButton.connect("clicked(bool)", self.onReplanButton)
         self.ui.openReportButton.connect("clicked(bool)", self.onOpenReportButton)
         self.ui.openReportButton.enabled = False
         self.ui.cancelButton.connect("clicked(bool)", self.onCancelButton)
@@ -169,6 +188,20 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
             "inputVolume": self.ui.inputVolumeSelector,
             "seed": self.ui.seedSelector,
             "lowestRenalOstium": self.ui.lowestRenalSelector,
+            "aorticBifurcation": self.ui.aorticBifurcationSelector,
+            "rightInternalIliacOrigin": self.ui.rightInternalIliacSelector,
+            "leftInternalIliacOrigin": self.ui.leftInternalIliacSelector,
+            "inputLumenSegmentation": self.ui.inputLumenSegmentationSelector,
+        }
+
+    def _placeWidgets(self):
+        """The point inputs' place widgets, by role (Settings.POINT_ROLES)."""
+        return {
+            "seed": self.ui.seedPlaceWidget,
+            "lowestRenalOstium": self.ui.lowestRenalPlaceWidget,
+            "aorticBifurcation": self.ui.aorticBifurcationPlaceWidget,
+            "rightInternalIliacOrigin": self.ui.rightInternalIliacPlaceWidget,
+            "leftInternalIliacOrigin": self.ui.leftInternalIliacPlaceWidget,
         }
 
     def updateGUIFromParameterNode(self, caller=None, event=None):
@@ -181,8 +214,9 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
                 _setWidgetValue(getattr(self.ui, setting.widget), settings[setting.name])
             for role, selector in self._nodeSelectors().items():
                 selector.setCurrentNode(self._parameterNode.GetNodeReference(role))
-            self.ui.seedPlaceWidget.setCurrentNode(self.ui.seedSelector.currentNode())
-            self.ui.lowestRenalPlaceWidget.setCurrentNode(self.ui.lowestRenalSelector.currentNode())
+            selectors = self._nodeSelectors()
+            for role, placeWidget in self._placeWidgets().items():
+                placeWidget.setCurrentNode(selectors[role].currentNode())
             manual = settings["thresholdMode"] == "manual"
             self.ui.lowerHuSpinBox.enabled = manual
             self.ui.upperHuSpinBox.enabled = manual
@@ -190,6 +224,8 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
             # No seed needed: without one the CLI finds the aorta, and the panel places the seed it used.
             ready = self.ui.inputVolumeSelector.currentNode()
             self.ui.applyButton.enabled = bool(ready) and self._run is None
+            self.ui.replanButton.enabled = (bool(ready) and self._run is None
+                                            and self.logic.canReplan(self._parameterNode))
             self.ui.cancelButton.enabled = self._run is not None
         finally:
             self._updatingGUI = False
@@ -206,11 +242,20 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
         self._parameterNode.EndModify(wasModified)
 
     def onApplyButton(self):
+        self._startRun(replan=False)
+
+    def onReplanButton(self):
+        """Run again from the landmarks as dragged and the last run's (or the edited) lumen."""
+        self._startRun(replan=True)
+
+    def _startRun(self, replan):
         with slicer.util.tryWithErrorDisplay("Could not start the planning run.", waitCursor=True):
             self.updateParameterNodeFromGUI()
+            self.ui.changesLabel.text = ""
             self.ui.orderListLabel.text = ""
             self.ui.recommendationLabel.text = ""
-            self._run = self.logic.startPlanning(self._parameterNode, self.onRunFinished, self.onRunProgress)
+            self._run = self.logic.startPlanning(self._parameterNode, self.onRunFinished, self.onRunProgress,
+                                                 replan=replan)
             self.ui.progressBar.value = 0
             self.ui.progressBar.show()
             self.ui.statusLabel.text = CliRun.progressText(0, "")
@@ -243,9 +288,24 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
         self.ui.openReportButton.enabled = self._reportHtmlPath is not None
         self.ui.openReportButton.toolTip = self._reportHtmlPath or "The run wrote no visual report."
         self.ui.measurementsTableView.setMRMLTableNode(self._parameterNode.GetNodeReference("resultsTable"))
+        self.ui.changesLabel.text = results.changesHtml
         self.ui.orderListLabel.text = results.orderListHtml
         self.ui.recommendationLabel.text = results.recommendationHtml
         self.ui.resultsCollapsibleButton.collapsed = False
+
+
+def _controlPoints(markupsNode):
+    """(label, description, RAS position) of each control point of a markups node whose position is
+    defined (the node's own coordinates); [] for no node."""
+    points = []
+    for index in range(markupsNode.GetNumberOfControlPoints() if markupsNode is not None else 0):
+        if markupsNode.GetNthControlPointPositionStatus(index) != slicer.vtkMRMLMarkupsNode.PositionDefined:
+            continue
+        ras = [0.0, 0.0, 0.0]
+        markupsNode.GetNthControlPointPosition(index, ras)
+        points.append((markupsNode.GetNthControlPointLabel(index), markupsNode.GetNthControlPointDescription(index),
+                       ras))
+    return points
 
 
 def _tableRows(tableNode):
@@ -305,6 +365,73 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
             lambda role: self._referencedNode(parameterNode, role.name, role.nodeClass, role.defaultName),
             reportPath, reportHtmlPath)
 
+    def canReplan(self, parameterNode):
+        """Whether Re-plan can run: a run has completed (its results are kept) and its landmarks and
+        lumen are still in the scene."""
+        landmarks, lumen = (parameterNode.GetNodeReference(role) for role in ("outputLandmarks", "outputLabelMap"))
+        return bool(parameterNode.GetParameter(LAST_RUN_RESULTS)) and landmarks is not None and (
+            lumen is not None and lumen.GetImageData() is not None)
+
+    def replanParameters(self, parameterNode, reportPath, reportHtmlPath=None):
+        """The re-plan's CLI parameters (Replan.replanParameters): the panel's settings and inputs as for
+        Apply, the landmarks as they are now against the last run's, and the lumen. A landmark given
+        to the CLI goes as the one point of its input point list (the panel's Inputs then show it)."""
+        previous = Replan.landmarksFromText(parameterNode.GetParameter(LAST_RUN_LANDMARKS))
+        edited = Replan.landmarksFromControlPoints(_controlPoints(parameterNode.GetNodeReference("outputLandmarks")))
+        lumenEdited = Replan.lumenEdited(parameterNode.GetParameter(LAST_RUN_LUMEN),
+                                         self.lumenFingerprint(parameterNode))
+        parameters = self.cliParameters(parameterNode, reportPath, reportHtmlPath)
+        lumen = self._replanLumen(parameterNode, lumenEdited)
+        return Replan.replanParameters(parameters, previous, edited, previousLumen=None if lumenEdited else lumen,
+                                       editedLumen=lumen if lumenEdited else None,
+                                       pointInput=lambda label, ras: self._landmarkInput(parameterNode, label, ras))
+
+    def _landmarkInput(self, parameterNode, role, ras):
+        """The point list of a landmark input (role: a Settings.POINT_ROLES name), holding the one point ras."""
+        words = Replan.LANDMARK_WORDS[role]
+        node = self._referencedNode(parameterNode, role, "vtkMRMLMarkupsFiducialNode", words[:1].upper() + words[1:])
+        node.RemoveAllControlPoints()
+        index = node.AddControlPoint(vtk.vtkVector3d(*ras))
+        node.SetNthControlPointLabel(index, words)
+        return node
+
+    def _lumenSegmentId(self, parameterNode):
+        segmentation = parameterNode.GetNodeReference("lumenSegmentation")
+        if segmentation is None:
+            return None, None
+        return segmentation, segmentation.GetSegmentation().GetSegmentIdBySegmentName(LUMEN_SEGMENT) or None
+
+    def lumenFingerprint(self, parameterNode):
+        """Replan.lumenFingerprint of the lumen segment on the CT's grid; "" when there is none."""
+        segmentation, segmentId = self._lumenSegmentId(parameterNode)
+        if segmentId is None:
+            return ""
+        mask = slicer.util.arrayFromSegmentBinaryLabelmap(segmentation, segmentId,
+                                                          parameterNode.GetNodeReference("inputVolume"))
+        return Replan.lumenFingerprint(mask.shape, mask.tobytes())
+
+    def _replanLumen(self, parameterNode, edited):
+        """The label map the re-plan starts from, in a node of its own (replanLumen): the lumen segment as
+        edited (one label, 1), else a copy of the last run's lumen. Not the outputLabelMap node itself,
+        which the re-plan writes: one node would be both the CLI's input and its output."""
+        node = self._referencedNode(parameterNode, "replanLumen", "vtkMRMLLabelMapVolumeNode", "Lumen (re-plan input)")
+        node.SetHideFromEditors(True)  # the panel's own copy: kept out of the volume selectors
+        if edited:
+            segmentation, segmentId = self._lumenSegmentId(parameterNode)
+            segmentIds = vtk.vtkStringArray()
+            segmentIds.InsertNextValue(segmentId)
+            slicer.modules.segmentations.logic().ExportSegmentsToLabelmapNode(
+                segmentation, segmentIds, node, parameterNode.GetNodeReference("inputVolume"))
+        else:
+            lumen = parameterNode.GetNodeReference("outputLabelMap")
+            image = vtk.vtkImageData()
+            image.DeepCopy(lumen.GetImageData())
+            node.SetAndObserveImageData(image)
+            ijkToRas = vtk.vtkMatrix4x4()
+            lumen.GetIJKToRASMatrix(ijkToRas)
+            node.SetIJKToRASMatrix(ijkToRas)
+        return node
+
     def _newReportHtmlPath(self, parameterNode):
         """The visual report's path: the reportFolder setting, else Slicer's temporary folder."""
         volume = parameterNode.GetNodeReference("inputVolume")
@@ -316,18 +443,27 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
         os.close(handle)
         return path
 
-    def startPlanning(self, parameterNode, onFinished, onProgress=None):
+    def _parametersOfRun(self, parameterNode, reportPath, reportHtmlPath, replan):
+        """(parameters, Replan.ReplanInputs or None): a plan's, or a re-plan's (replanParameters)."""
+        if not replan:
+            return self.cliParameters(parameterNode, reportPath, reportHtmlPath), None
+        inputs = self.replanParameters(parameterNode, reportPath, reportHtmlPath)
+        return inputs.parameters, inputs
+
+    def startPlanning(self, parameterNode, onFinished, onProgress=None, replan=False):
         """Start the CLI in the background; onFinished(outcome, results, errorText) is called once it ends
-        (outcome: CliRun.COMPLETED with results, CANCELLED, or FAILED with the error text)."""
+        (outcome: CliRun.COMPLETED with results, CANCELLED, or FAILED with the error text). replan: run
+        from the edited landmarks and the last run's lumen (results.changesHtml then lists the changes)."""
         reportPath = self._newReportPath()
         reportHtmlPath = self._newReportHtmlPath(parameterNode)
         try:
-            parameters = self.cliParameters(parameterNode, reportPath, reportHtmlPath)
+            parameters, replanInputs = self._parametersOfRun(parameterNode, reportPath, reportHtmlPath, replan)
             cliNode = CliRun.startCli(slicer.cli, slicer.modules, parameters, waitForCompletion=False)
         except Exception:
             os.remove(reportPath)
             raise
         run = CliRun.PlanningRun(cliNode, reportPath, parameterNode, reportHtmlPath)
+        run.replan = replanInputs
 
         def finish():
             if run.abandoned:  # the scene closed after this finish was scheduled
@@ -364,15 +500,16 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
         except OSError:
             pass  # not written yet, or still held open by the CLI being cancelled: a temporary file
 
-    def runPlanning(self, parameterNode):
+    def runPlanning(self, parameterNode, replan=False):
         """Run the CLI and wait; returns PlanningResults, raises RuntimeError with the CLI's error text."""
         reportPath = self._newReportPath()
         reportHtmlPath = self._newReportHtmlPath(parameterNode)
         run = None
         try:
-            parameters = self.cliParameters(parameterNode, reportPath, reportHtmlPath)
+            parameters, replanInputs = self._parametersOfRun(parameterNode, reportPath, reportHtmlPath, replan)
             cliNode = CliRun.startCli(slicer.cli, slicer.modules, parameters, waitForCompletion=True)
             run = CliRun.PlanningRun(cliNode, reportPath, parameterNode, reportHtmlPath)
+            run.replan = replanInputs
             return self.finishPlanning(run)
         finally:
             if run is not None:
@@ -405,7 +542,25 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
         self.showOutputs(run.parameterNode)
         self.showDiameterProfile(run.parameterNode)
         self.showResultsTable(run.parameterNode, results.tableRows)
+        self._recordRun(run, results)
         return results
+
+    def _recordRun(self, run, results):
+        """What the next Re-plan compares with, kept in the parameter node (so a saved scene can be
+        re-planned): this run's landmarks, what the panel showed and its lumen; for a re-plan, first the
+        changes against the run before (results.changesHtml)."""
+        parameterNode = run.parameterNode
+        snapshot = Replan.resultsSnapshot(results.values, results.report)
+        if run.replan is not None:
+            before = Replan.snapshotFromText(parameterNode.GetParameter(LAST_RUN_RESULTS))
+            changes = None if before is None else Replan.changeLines(before, snapshot)
+            results.changesHtml = Replan.replanHtml(run.replan, changes)
+        landmarks = Replan.landmarksFromControlPoints(_controlPoints(parameterNode.GetNodeReference("outputLandmarks")))
+        wasModified = parameterNode.StartModify()
+        parameterNode.SetParameter(LAST_RUN_LANDMARKS, Replan.landmarksToText(landmarks))
+        parameterNode.SetParameter(LAST_RUN_RESULTS, json.dumps(snapshot))
+        parameterNode.SetParameter(LAST_RUN_LUMEN, self.lumenFingerprint(parameterNode))
+        parameterNode.EndModify(wasModified)
 
     def _addSegment(self, segmentation, labelMap, name, color):
         """The voxels of labelMap with a label of 1 or more as a new segment; its ID, or None when
@@ -476,7 +631,12 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
         landmarks = parameterNode.GetNodeReference("outputLandmarks")
         landmarks.CreateDefaultDisplayNodes()
         landmarks.GetDisplayNode().SetSelectedColor(*Appearance.LOOKS["outputLandmarks"].color)
-        landmarks.SetLocked(True)
+        # Re-plan (issue 45): the four landmarks the CLI takes as inputs can be dragged; the others (ostia
+        # found on the centerlines) stay locked, since no input takes them.
+        landmarks.SetLocked(False)
+        for index in range(landmarks.GetNumberOfControlPoints()):
+            editable = landmarks.GetNthControlPointLabel(index) in Replan.EDITABLE_LANDMARKS
+            landmarks.SetNthControlPointLocked(index, not editable)
         self.showStraightenedVolume(parameterNode)
 
     def componentColorNode(self, parameterNode):

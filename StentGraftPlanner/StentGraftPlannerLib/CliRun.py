@@ -60,6 +60,7 @@ class PlanningRun:
         self.reportPath = reportPath
         self.reportHtmlPath = reportHtmlPath  # the visual report: kept after the run (the user opens it)
         self.parameterNode = parameterNode
+        self.replan = None  # a re-plan's Replan.ReplanInputs (what it started from), None for a plan
         self.observers = []
         self.finishing = False
         self.abandoned = False

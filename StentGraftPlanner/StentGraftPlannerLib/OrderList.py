@@ -66,18 +66,30 @@ def _proximalEdgeText(report, deployment):
     return "%s %s %s" % (_mm(abs(offset)), "below" if offset > 0 else "above", edge)
 
 
-def _componentLine(component, deployment, report):
-    """One ordered component: role, name, diameters × length, catalogue code, and where it lies."""
-    role = component.get("role")
-    words = ROLE_WORDS.get(role, _words(role or "component"))
-    side = _VESSEL_SIDES.get(component.get("vessel")) if role not in ("mainBody", "aorticCuff") else None
+def componentSide(component):
+    """"right" or "left" for a component in an iliac (a limb, an iliac extension), else None."""
+    if component.get("role") in ("mainBody", "aorticCuff"):
+        return None
+    return _VESSEL_SIDES.get(component.get("vessel"))
+
+
+def componentProductText(component):
+    """What is ordered, as the catalogue sizes it: "Excluder contralateral leg 14.5 × 100 mm (PLC141000)";
+    a tapered one "26-14.5 × 120 mm"; "code not public" where the catalogue gives no code."""
     diameter, distal = _toFloat(component.get("diameterMm")), _toFloat(component.get("distalDiameterMm"))
     diameters = _size(diameter if diameter is not None else distal)
     if diameter is not None and distal is not None and distal != diameter:
         diameters += "-" + _size(distal)
     code = component.get("catalogueCode") or "code not public"
-    text = "%s%s: %s %s × %s mm (%s)" % (side + " " if side else "", words, component.get("name", "?"), diameters,
-                                        _size(component.get("lengthMm")), code)
+    return "%s %s × %s mm (%s)" % (component.get("name", "?"), diameters, _size(component.get("lengthMm")), code)
+
+
+def _componentLine(component, deployment, report):
+    """One ordered component: role, name, diameters × length, catalogue code, and where it lies."""
+    role = component.get("role")
+    words = ROLE_WORDS.get(role, _words(role or "component"))
+    side = componentSide(component)
+    text = "%s%s: %s" % (side + " " if side else "", words, componentProductText(component))
     ends = _list(component.get("fromTargetMm"))
     proximal, distalEnd = (_toFloat(ends[0]), _toFloat(ends[1])) if len(ends) == 2 else (None, None)
     if role == "mainBody":

@@ -18,7 +18,8 @@ from . import OrderList, Results
 class PlanningResults:
     """What a finished run returned: return values, the parsed report, the results table's rows
     (label, value text, wall, estimated) and the panel text as rich text for QLabels; the visual
-    report's path, when the run wrote one."""
+    report's path, when the run wrote one; for a re-plan, what changed (changesHtml, set by the
+    panel's logic from Replan.replanHtml; "" for a plan)."""
 
     def __init__(self, values, report, measurementRows, reportHtmlPath=None):
         self.values = values
@@ -27,6 +28,7 @@ class PlanningResults:
         self.tableRows = Results.resultsTableRows(values, measurementRows)
         self.orderListHtml = OrderList.orderListHtml(report, values)
         self.recommendationHtml = Results.recommendationHtml(report)
+        self.changesHtml = ""
 
 
 def planningResults(reportText, getParameterAsString, measurementRows, reportHtmlPath=None):

@@ -43,6 +43,9 @@ AUTO_DEVICE = "auto"
 FALLBACK_DEVICE_FAMILIES = ("Endurant II", "Excluder (C3)", "Excluder Conformable", "Zenith Flex")
 
 SETTINGS = (
+    # A lumen segmentation made elsewhere (issue 45): which of its labels are lumen; empty: every
+    # non-zero voxel of a single-label map (the CLI refuses a map with several labels then).
+    _setting("lumenLabels", "str", "", "lumenLabelsLineEdit"),
     # Lumen segmentation (XML group "Lumen segmentation").
     _setting("thresholdMode", "enum", "auto", "thresholdModeComboBox", choices=("auto", "manual")),
     _setting("lowerHu", "float", 200.0, "lowerHuSpinBox"),
@@ -101,6 +104,13 @@ NODE_ROLES = (
     # Optional: without a point the CLI finds the aorta itself; the panel then places the seed used.
     NodeRole("seed", "vtkMRMLMarkupsFiducialNode", "input", False, ""),
     NodeRole("lowestRenalOstium", "vtkMRMLMarkupsFiducialNode", "input", False, ""),
+    # Optional landmarks (issue 45): a given point replaces the one the plan finds. The panel's Re-plan
+    # writes a landmark the surgeon moved into its point list here.
+    NodeRole("aorticBifurcation", "vtkMRMLMarkupsFiducialNode", "input", False, ""),
+    NodeRole("rightInternalIliacOrigin", "vtkMRMLMarkupsFiducialNode", "input", False, ""),
+    NodeRole("leftInternalIliacOrigin", "vtkMRMLMarkupsFiducialNode", "input", False, ""),
+    # Optional: a lumen segmentation made elsewhere, taken instead of region growing (lumenLabels).
+    NodeRole("inputLumenSegmentation", "vtkMRMLLabelMapVolumeNode", "input", False, ""),
     NodeRole("outputLabelMap", "vtkMRMLLabelMapVolumeNode", "output", False, "Lumen"),
     # 1 lumen, 2 thrombus and wall, 3 calcification: everything inside the outer wall.
     NodeRole("outputWallLabelMap", "vtkMRMLLabelMapVolumeNode", "output", False, "Vessel wall"),
@@ -118,6 +128,10 @@ NODE_ROLES = (
 )
 
 NODE_ROLES_BY_NAME = {r.name: r for r in NODE_ROLES}
+
+#: The point inputs (markups nodes), each sent only when it holds a selected point: without a seed the
+#: CLI finds the aorta itself (seedSource automatic), without a landmark it finds the landmark.
+POINT_ROLES = tuple(r.name for r in NODE_ROLES if r.channel == "input" and r.nodeClass == "vtkMRMLMarkupsFiducialNode")
 OUTPUT_ROLES = tuple(r for r in NODE_ROLES if r.channel == "output")
 
 #: CLI parameter of the JSON report (a ``file`` output: Slicer passes the path unchanged).
@@ -272,12 +286,13 @@ def buildCliParameters(settings, nodes, pointCounts, reportPath, reportHtmlPath=
 
     settings: a dict as from ``defaultSettings`` (all names present).
     nodes: role name -> node (opaque here; ``None`` or missing when not selected).
-    pointCounts: role name -> number of control points, for the markups inputs (seed and
-        lowestRenalOstium); Slicer sends only the first point of a non-multiple ``point``.
+    pointCounts: role name -> number of selected control points, for the markups inputs
+        (POINT_ROLES); Slicer sends only the first selected point of a non-multiple ``point``.
     reportPath: where the CLI writes its JSON report (a temporary file).
     reportHtmlPath: where it writes the visual report (``reportHtmlPath()``); None: not asked for.
 
-    A seed point list that is missing or empty is left out: the CLI then finds the aorta itself.
+    A point list (seed or landmark) that is missing or empty is left out: the CLI then finds the aorta
+    or the landmark itself. An input lumen segmentation goes as its node, with lumenLabels.
     Raises ValueError when a required input is missing, or a setting rule is broken (``validateSettings``). Floats go as text formatted by ``formatNumber`` (slicer.cli
     hands a Python float to ``SetParameterAsDouble``, which keeps six significant digits:
     acmToleranceMm 0.00123456789 would reach the CLI as 0.00123457, 1234567.0 as 1.23457e+06),
@@ -306,10 +321,8 @@ def buildCliParameters(settings, nodes, pointCounts, reportPath, reportHtmlPath=
             if role.channel == "output":
                 raise ValueError("No node for the output %s; the logic creates one before the run." % role.name)
             continue
-        if role.name == "lowestRenalOstium" and pointCounts.get(role.name, 0) < 1:
-            continue  # optional landmark, not placed: the CLI detects the renal arteries itself
-        if role.name == "seed" and pointCounts.get(role.name, 0) < 1:
-            continue  # no seed placed: the CLI finds the aorta itself (seedSource automatic)
+        if role.name in POINT_ROLES and pointCounts.get(role.name, 0) < 1:
+            continue  # no point placed: the CLI finds the aorta (seed) or the landmark itself
         parameters[role.name] = node
     parameters[REPORT_PARAMETER] = str(reportPath)
     if reportHtmlPath:

@@ -14,6 +14,9 @@ that way in CTest (``Testing/Python``).
   the device recommendation and the fit check.
 - ``Outcome``: what a completed run returned, as the panel's values, table rows and text (a run
   whose device selection found nothing among them: a result, not a failure).
+- ``Replan``: the panel's Re-plan: the landmarks of a run read back and compared with their dragged
+  positions, the re-plan's CLI parameters (moved and given landmarks in RAS, the last run's or the
+  edited lumen), and what changed between two runs, in words at clinical precision.
 - ``Appearance``: colours and opacities of the outputs and of the plot series, and the colours of
   the simulated graft's components.
 """

@@ -66,7 +66,7 @@ def sentParameterProblems(Settings, declared):
     """Problems of the dictionary the module builds with every optional input given."""
     nodes = {role.name: role for role in Settings.NODE_ROLES}
     settings = dict(Settings.defaultSettings(), deviceCatalogPath="/x/devices.json", neckRulesPath="/x/rules.json")
-    sent = Settings.buildCliParameters(settings, nodes, {"seed": 1, "lowestRenalOstium": 1}, "/x/report.json")
+    sent = Settings.buildCliParameters(settings, nodes, {name: 1 for name in Settings.POINT_ROLES}, "/x/report.json")
     problems = []
     for name, value in sent.items():
         parameter = declared.get(name)

@@ -24,7 +24,8 @@ def allNodes():
     return {role.name: Node(role.name) for role in Settings.NODE_ROLES}
 
 
-ONE_POINT = {"seed": 1, "lowestRenalOstium": 1}
+#: One selected point in every point list (the seed and the landmarks).
+ONE_POINT = {name: 1 for name in Settings.POINT_ROLES}
 
 
 class SettingsStringsTest(unittest.TestCase):
@@ -250,6 +251,37 @@ class BuildCliParametersTest(unittest.TestCase):
         for nodes, counts in ((allNodes(), {"seed": 1, "lowestRenalOstium": 0}),
                               (dict(allNodes(), lowestRenalOstium=None), {"seed": 1})):
             self.assertNotIn("lowestRenalOstium", self.build(nodes=nodes, counts=counts))
+
+    def test_GivenLandmarksAndLumen_AreSentUnderTheClisNames(self):
+        # Issue 45: the three landmarks beside the renal one, and a lumen segmentation with its labels.
+        self.assertEqual(Settings.POINT_ROLES, ("seed", "lowestRenalOstium", "aorticBifurcation",
+                                                "rightInternalIliacOrigin", "leftInternalIliacOrigin"))
+        lumen = Settings.NODE_ROLES_BY_NAME["inputLumenSegmentation"]
+        self.assertEqual((lumen.nodeClass, lumen.channel, lumen.required),
+                         ("vtkMRMLLabelMapVolumeNode", "input", False))
+        nodes = allNodes()
+        settings = dict(Settings.defaultSettings(), lumenLabels="52,65,66")
+        parameters = self.build(settings, nodes=nodes)
+        for name in ("aorticBifurcation", "rightInternalIliacOrigin", "leftInternalIliacOrigin",
+                     "inputLumenSegmentation"):
+            self.assertIs(parameters[name], nodes[name], name)
+        self.assertEqual(parameters["lumenLabels"], "52,65,66")
+        self.assertEqual(self.build()["lumenLabels"], "")  # the CLI's default: every non-zero voxel
+
+    def test_LandmarkWithoutPoints_IsLeftOutForTheCliToFind(self):
+        for name in ("aorticBifurcation", "rightInternalIliacOrigin", "leftInternalIliacOrigin"):
+            parameters = self.build(counts=dict(ONE_POINT, **{name: 0}))
+            self.assertNotIn(name, parameters)
+            self.assertIn("seed", parameters)
+            self.assertNotIn(name, self.build(nodes=dict(allNodes(), **{name: None})))
+
+    def test_NoLumenSegmentation_IsLeftOutForRegionGrowing(self):
+        self.assertNotIn("inputLumenSegmentation", self.build(nodes=dict(allNodes(), inputLumenSegmentation=None)))
+
+    def test_LumenLabels_SurviveTheParameterNode(self):
+        settings = dict(Settings.defaultSettings(), lumenLabels="aorta, left common iliac")
+        back, problems = Settings.settingsFromStrings(Settings.settingsToStrings(settings))
+        self.assertEqual((back["lumenLabels"], problems), ("aorta, left common iliac", []))
 
     def test_MissingVolume_IsAValueError(self):
         with self.assertRaisesRegex(ValueError, "CT volume"):
