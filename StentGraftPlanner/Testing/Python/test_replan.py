@@ -10,7 +10,6 @@ Run: /usr/bin/python3 -m unittest discover -s StentGraftPlanner/Testing/Python -
 """
 import copy
 import json
-import math
 import os
 import re
 import sys
