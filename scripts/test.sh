@@ -76,8 +76,9 @@ if [ "$#" -eq 2 ] && [ "$1" = "-LE" ] && [ "$2" = "benchmark" ] || [ "${SGP_SANI
     # ChestScanWithoutRenals, CutScanWithoutRenals). Issue 45's given lumen and landmarks: the
     # round trip (GivenLumen.RoundTripPlansTheSame) and the unit tests of the lumen's resampling and
     # the landmarks run here; the AVT cases and the landmark and TotalSegmentator phantoms repeat
-    # that code on more plans.
-    repeated='^(AutomaticSeed\.|FindAorticSeed\.(RandomAnatomies|EveryTestPhantom)_|RealAnatomy/(AvtAutomaticSeed|AvtCutBelowTheBifurcation|AvtGivenLumen)\.|GivenLandmarks\.(Correct|Each)|GivenLumenMap\.|Deployment/|Deployment\.(SameNeck|DemoPhantom|Twelve|TwentySix|Sixteen)|Issue31/|Issue32/|Issue32\.)'
+    # that code on more plans, and the panel's re-plan check (StentGraftPlanner.PanelReplan) runs
+    # the CLI paths cli.GivenInputs runs here.
+    repeated='^(AutomaticSeed\.|FindAorticSeed\.(RandomAnatomies|EveryTestPhantom)_|RealAnatomy/(AvtAutomaticSeed|AvtCutBelowTheBifurcation|AvtGivenLumen)\.|GivenLandmarks\.(Correct|Each)|GivenLumenMap\.|StentGraftPlanner\.PanelReplan|Deployment/|Deployment\.(SameNeck|DemoPhantom|Twelve|TwentySix|Sixteen)|Issue31/|Issue32/|Issue32\.)'
     ctest --output-on-failure -j 2 -L 'unit|cli' -E "$repeated"
     stage_done "sanitizer tests"
   fi
