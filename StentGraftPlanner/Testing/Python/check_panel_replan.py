@@ -44,12 +44,9 @@ sys.path.insert(0, os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "Testing", "CLI"))
 from StentGraftPlannerLib import Outcome, Replan, Settings  # noqa: E402
 import sem_rules  # noqa: E402
-from test_bad_input import check, results  # noqa: E402
-from test_bad_input import run as run_cli_process  # noqa: E402
+from test_bad_input import check  # noqa: E402
+from check_panel_run import EXTENSIONS, finish, run  # noqa: E402  (the panel run's harness)
 
-#: The file Slicer writes or reads for each output node class (its default storage extension).
-EXTENSIONS = {"vtkMRMLLabelMapVolumeNode": ".nrrd", "vtkMRMLScalarVolumeNode": ".nrrd", "vtkMRMLModelNode": ".vtp",
-              "vtkMRMLTableNode": ".csv", "vtkMRMLMarkupsFiducialNode": ".mrk.json"}
 
 #: How far the given point's effect may differ from the distance it was moved along the centerline, in
 #: mm: the CLI takes a given point to the nearest point of its centerline, sampled every
@@ -63,11 +60,6 @@ UNRELATED_TO_ILIAC_ORIGIN = ("(a) proximal neck diameter, outer wall", "(a) prox
                              "(f) left iliac diameter, outer wall", "(f) left iliac diameter, lumen")
 UNRELATED_TO_BIFURCATION = ("(a) proximal neck diameter, outer wall", "(a) proximal neck diameter, lumen",
                             "Proximal neck length")
-
-
-def run(argv, cwd):
-    print("RUN: " + " ".join(argv))
-    return run_cli_process(argv, cwd)
 
 
 def centerline(path, name):
@@ -320,12 +312,6 @@ def main():
     wrong = [line for name in UNRELATED_TO_BIFURCATION for line in named(lines, name)]
     check(not wrong, "re-plan 2: the change list does not name (a) or the proximal neck length", str(wrong))
     return finish()
-
-
-def finish():
-    passed = sum(results)
-    print(f"{passed} passed, {len(results) - passed} failed")
-    return 0 if results and all(results) else 1
 
 
 if __name__ == "__main__":
