@@ -310,8 +310,16 @@ LumenSegmentation LumenFromSegmentation(const LabelImage::Pointer& given,
     ForEachInBox(givenBox, given->GetLargestPossibleRegion().GetSize(),
                  [&](long, long image) { voxels[image] = voxels[image] ? 1 : 0; });
   }
-  // Padded so that every foreground voxel has neighbours in the box (the thinning's rule).
-  const IndexBox box = ForegroundBox(*lumen.mask, { 3, 3, 3 });
+  // Padded so that every foreground voxel has neighbours in the box (the thinning's rule). Where
+  // the given image is the mask its foreground box is known; only a resampled mask is scanned.
+  const std::array<long, 3> pad{ 3, 3, 3 };
+  const IndexBox box =
+    lumen.mask == given
+      ? PaddedBox(givenBox.first,
+                  { givenBox.first[0] + givenBox.size[0] - 1, givenBox.first[1] + givenBox.size[1] - 1,
+                    givenBox.first[2] + givenBox.size[2] - 1 },
+                  pad, given->GetLargestPossibleRegion().GetSize())
+      : ForegroundBox(*lumen.mask, pad);
   if (box.Empty())
     throw InputError("The lumen segmentation " + description + " lies at " + Extent(*given) +
                      " and no voxel of it falls on the CT's grid (" + Extent(*ct) +
