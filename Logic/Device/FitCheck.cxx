@@ -4,6 +4,8 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include "Centerlines/ProximalSite.h"
 #include "Common/Errors.h"
@@ -168,6 +170,55 @@ std::string WhyRingDoesNotSeal(const StentMesh& mesh,
   return why;
 }
 
+/// Why vertex i does not seal, in words (the shortest apposition length's column).
+std::string WhyVertexDoesNotSeal(int i, const FitCheck& c, bool aneurysmal, const FitCheckParams& p)
+{
+  const std::string overCalcium = c.calcified[i] == 1 ? " over calcium" : "";
+  if (c.appositionMm[i] > p.contactToleranceMm)
+    return "it is not in contact with the wall" + overCalcium + " (gap " + Mm(c.appositionMm[i]) + ")";
+  if (aneurysmal)
+    return "the aorta under it is wider than " + FormatNumber(100.0 + p.neckDilationPercent, 0) +
+           " % of (a) (the aneurysm)";
+  if (c.healthyWall[i] == 0 && c.thrombusUnderMm[i] > p.maxThrombusMm)
+    return "it lies on thrombus " + Mm(c.thrombusUnderMm[i]) + " thick (over " + FormatNumber(p.maxThrombusMm, 0) +
+           " mm)";
+  if (c.healthyWall[i] == 0 && c.calcified[i] == 1)
+    return "it lies on calcium";
+  return "it does not seal";
+}
+
+/// The direction from `centre` to `vertex` across the unit `axis`, in the patient's words (LPS: +x
+/// left, +y posterior, +z superior): each axis whose share of the unit direction is at least
+/// sin 22.5° (eight sectors around an axial graft), the larger first — "left posterior", "anterior".
+std::string PatientSide(const Point3& centre, const Point3& vertex, const Eigen::Vector3d& axis)
+{
+  Eigen::Vector3d d = vertex - centre;
+  d -= d.dot(axis) * axis;
+  if (d.norm() < 1e-9)
+    return "centre";
+  d.normalize();
+  const char* positive[3] = { "left", "posterior", "superior" };
+  const char* negative[3] = { "right", "anterior", "inferior" };
+  std::vector<std::pair<double, std::string>> parts;
+  for (int a = 0; a < 3; ++a)
+    if (std::abs(d[a]) >= std::sin(pi / 8.0))
+      parts.emplace_back(std::abs(d[a]), d[a] > 0.0 ? positive[a] : negative[a]);
+  std::sort(parts.begin(), parts.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+  std::string words;
+  for (const auto& part : parts)
+    words += (words.empty() ? "" : " ") + part.second;
+  return words;
+}
+
+/// The centre of ring k of `segment` on the deployed surface (the mean of its vertices), LPS mm.
+Point3 RingCentre(const StentMesh& mesh, const Points& V, int segment, int k)
+{
+  Point3 centre = Point3::Zero();
+  for (int j = 0; j < mesh.verticesPerRing; ++j)
+    centre += V.row(mesh.Id(segment, k, j)).transpose();
+  return centre / double(mesh.verticesPerRing);
+}
+
 std::string ComponentWords(const ConfiguredComponent& c)
 {
   return c.item.name + (c.item.code.empty() ? "" : " " + c.item.code);
@@ -251,12 +302,45 @@ FitCheck CheckGraftFit(const DeployedGraft& graft,
         }
     }
   }
+  // The seal's uncertainty: its top (the site) and its end (where the wall turns unhealthy) are
+  // each placed no better than the wall planes' 1 mm step or, on coarser scans, the sampling
+  // interval along the aorta (a thrombus onset blurred over a 2.5 mm slice).
+  const double voxel = std::isfinite(context.voxelAlongAortaMm) ? context.voxelAlongAortaMm : 0.0;
+  c.proximalSealUncertaintyMm = std::max(p.sealUncertaintyMm, 2.0 * voxel);
+  c.proximalSealUncertaintyWhy =
+    2.0 * voxel > p.sealUncertaintyMm
+      ? "the site's and the seal end's " + Mm(voxel) + " each, the scan's sampling interval along the aorta"
+      : "the site's 1 mm and the wall planes' 1 mm";
+
+  // The shortest apposition length: the shortest column's continuous sealed length from the edge,
+  // where that column lies and why it stops.
   c.shortestAppositionLengthMm = std::numeric_limits<double>::infinity();
+  int shortestColumn = 0, shortestEnd = -1;
   for (int j = 0; j < mesh.verticesPerRing; ++j)
-    c.shortestAppositionLengthMm = std::min(
-      c.shortestAppositionLengthMm,
-      SealedLength(
-        trunkS, 0, trunkRings - 1, 1, [&](int k) { return double(c.sealing[mesh.Id(TrunkSegment, k, j)]); }, 1.0));
+  {
+    int columnEnd = -1;
+    const double length = SealedLength(
+      trunkS, 0, trunkRings - 1, 1, [&](int k) { return double(c.sealing[mesh.Id(TrunkSegment, k, j)]); }, 1.0,
+      &columnEnd);
+    if (length < c.shortestAppositionLengthMm)
+    {
+      c.shortestAppositionLengthMm = length;
+      shortestColumn = j;
+      shortestEnd = columnEnd;
+    }
+  }
+  {
+    const Point3 top = RingCentre(mesh, V, TrunkSegment, 0);
+    Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+    if (trunkRings > 1 && (RingCentre(mesh, V, TrunkSegment, 1) - top).norm() > 1e-9)
+      axis = (RingCentre(mesh, V, TrunkSegment, 1) - top).normalized();
+    c.shortestAppositionSide = PatientSide(top, V.row(mesh.Id(TrunkSegment, 0, shortestColumn)).transpose(), axis);
+    if (shortestEnd >= 0)
+    {
+      const int i = mesh.Id(TrunkSegment, shortestEnd, shortestColumn);
+      c.shortestAppositionEnd = WhyVertexDoesNotSeal(i, c, aneurysmal[std::size_t(i)], p);
+    }
+  }
   const int sealedRings = failing < 0 ? trunkRings : failing;
   int calcified = 0, zone = 0;
   for (int k = 0; k < sealedRings; ++k)
@@ -381,20 +465,31 @@ FitCheck CheckGraftFit(const DeployedGraft& graft,
                          " seals from its proximal edge down to " + Mm(c.proximalSealLengthMm) + " below it" +
                          (c.proximalSealEnd.empty() ? "" : ", where " + c.proximalSealEnd));
   }
-  else if (c.proximalSealLengthMm < p.minimumProximalSealMm + p.sealUncertaintyMm)
+  else if (c.proximalSealLengthMm < p.minimumProximalSealMm + c.proximalSealUncertaintyMm)
   {
     c.migrationRisk = true;
     c.findings.push_back("type Ia endoleak and migration risk cannot be excluded: proximal seal " +
-                         Mm(c.proximalSealLengthMm) + ", within its uncertainty (" + Mm(p.sealUncertaintyMm) +
-                         ": the site's 1 mm and the wall planes' 1 mm) of the " +
-                         FormatNumber(p.minimumProximalSealMm, 0) + " mm needed — the " + ComponentWords(body) +
-                         " seals from its proximal edge down to " + Mm(c.proximalSealLengthMm) + " below it" +
+                         Mm(c.proximalSealLengthMm) + ", within its uncertainty (" + Mm(c.proximalSealUncertaintyMm) +
+                         ": " + c.proximalSealUncertaintyWhy + ") of the " + FormatNumber(p.minimumProximalSealMm, 0) +
+                         " mm needed — the " + ComponentWords(body) + " seals from its proximal edge down to " +
+                         Mm(c.proximalSealLengthMm) + " below it" +
                          (c.proximalSealEnd.empty() ? "" : ", where " + c.proximalSealEnd));
+  }
+  if (c.shortestAppositionLengthMm < p.minimumAppositionLengthMm)
+  {
+    c.migrationRisk = true;
+    c.findings.push_back("type Ia endoleak and migration risk: shortest apposition length " +
+                         Mm(c.shortestAppositionLengthMm) + ", needs ≥ " +
+                         FormatNumber(p.minimumAppositionLengthMm, 0) + " mm — the " + ComponentWords(body) +
+                         " on the patient's " + c.shortestAppositionSide +
+                         " side is apposed from its proximal edge down to " + Mm(c.shortestAppositionLengthMm) +
+                         " below it" + (c.shortestAppositionEnd.empty() ? "" : ", where " + c.shortestAppositionEnd));
   }
   const double iliacMinimum =
     std::isfinite(context.minimumIliacSealMm) ? context.minimumIliacSealMm : p.minimumIliacSealMm;
   c.minimumProximalSealMm = p.minimumProximalSealMm;
   c.minimumIliacSealMm = iliacMinimum;
+  c.minimumAppositionLengthMm = p.minimumAppositionLengthMm;
   for (int side = 0; side < 2; ++side)
     if (c.limbChecked[side] && *iliacSeal[side] < iliacMinimum)
       c.findings.push_back("type Ib endoleak risk: " + std::string(sides[side]) + " iliac seal " +
@@ -445,7 +540,8 @@ std::vector<Measurement> FitCheckRows(const FitCheck& c, const DeployedGraft& gr
   std::vector<Measurement> rows = {
     { "proximalSealLength", c.proximalSealLengthMm, "mm",
       std::string("simulated graft: sealed length from its proximal edge down, on healthy wall (apposed, thrombus ") +
-        "under 2 mm, outer diameter within 10 % of (a))" + estimated(0),
+        "under 2 mm, outer diameter within 10 % of (a)); uncertainty " + Mm(c.proximalSealUncertaintyMm) + " (" +
+        c.proximalSealUncertaintyWhy + ")" + estimated(0),
       "aorta", top },
     { "rightIliacSealLength", c.rightIliacSealLengthMm, "mm",
       std::string("simulated graft: sealed length from the right distal edge up, on healthy wall") + estimated(1),

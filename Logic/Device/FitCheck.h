@@ -44,7 +44,14 @@
 ///
 /// Findings (one line each, naming the component and the level; none = the fit check passed):
 ///  - type Ia risk: proximal seal shorter than `minimumProximalSealMm` (10 mm), and why it ends;
-///    within `sealUncertaintyMm` above it the risk "cannot be excluded" (flagged all the same);
+///    within its uncertainty above it (`sealUncertaintyMm`, 2 mm, or on coarser scans twice the
+///    voxel's extent along the aorta: FitCheckContext::voxelAlongAortaMm) the risk "cannot be
+///    excluded" (flagged all the same);
+///  - type Ia risk from apposition: the shortest apposition length under
+///    `minimumAppositionLengthMm` (10 mm), even where the rings seal (a column over a narrow arc of
+///    thrombus or out of contact leaves the rest of its ring sealing): naming the column's side in
+///    the patient's words and why it stops apposing (not in contact, on thrombus, on calcium, on the
+///    aneurysm's wall);
 ///  - type Ib risk: an iliac seal shorter than the family's minimum iliac seal;
 ///  - type III risk: an overlap (limb in the gate or leg, extension in a limb) below the family's
 ///    minimum — measured on the deployed positions;
@@ -91,6 +98,9 @@ struct FitCheckParams
   /// within it above the minimum cannot exclude the risk: it is flagged too, as "cannot be
   /// excluded" (issue 32: a 9 mm healthy neck read 10.8 mm, its site 0.8 mm high).
   double sealUncertaintyMm = 2.0;
+  /// A shortest apposition length (SAL) under this is associated with late type Ia endoleak and
+  /// migration (Schuurmann's SAL on the first post-operative CTA; device-configuration.md §2).
+  double minimumAppositionLengthMm = 10.0;
   double minimumIliacSealMm = 10.0;      ///< used where the family gives none
   double ostiumOverlapToleranceMm = 0.5; ///< a graft edge at the ostium's edge does not cover it
 };
@@ -103,6 +113,10 @@ struct FitCheckContext
   double minimumOverlapMm = std::numeric_limits<double>::quiet_NaN();   ///< the family's (NaN: not checked)
   std::vector<ConfigurationFinding> configurationFindings;
   std::array<bool, 2> limbSized{ true, true }; ///< false: a partial plan's unsized leg
+  /// The scan's sampling interval along the aorta at the proximal site (√Σ_i (axis_i · t
+  /// spacing_i)², t the aorta's direction: the slice spacing along an axial aorta), mm: the site
+  /// and a thrombus onset are placed no better than it. NaN: not known (sealUncertaintyMm alone).
+  double voxelAlongAortaMm = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct OstiumCoverage
@@ -124,9 +138,19 @@ struct FitCheck
   Eigen::VectorXi calcified;         ///< #V, 1, 0, −1 not traced
   Eigen::VectorXi sealing;           ///< #V, 0 or 1
   double proximalSealLengthMm = 0.0;
-  double minimumProximalSealMm = 0.0;      ///< the minimum the proximal seal was judged against
-  double minimumIliacSealMm = 0.0;         ///< and each iliac seal (the family's, else FitCheckParams')
+  double minimumProximalSealMm = 0.0;     ///< the minimum the proximal seal was judged against
+  double minimumIliacSealMm = 0.0;        ///< and each iliac seal (the family's, else FitCheckParams')
+  double minimumAppositionLengthMm = 0.0; ///< and the shortest apposition length
+  /// The proximal seal's uncertainty, mm: max(FitCheckParams::sealUncertaintyMm, 2 × the voxel
+  /// along the aorta) — its top and its end each placed no better than one voxel — and why, in words.
+  double proximalSealUncertaintyMm = 0.0;
+  std::string proximalSealUncertaintyWhy;
   double shortestAppositionLengthMm = 0.0; ///< SAL over the trunk's columns
+  /// The column with the SAL: where it lies around the graft's proximal edge in the patient's words
+  /// ("left posterior": the direction from the edge's centre, across the graft's axis, LPS), and why
+  /// it stops apposing ("" when it apposes to the trunk's end).
+  std::string shortestAppositionSide;
+  std::string shortestAppositionEnd;
   double rightIliacSealLengthMm = 0.0;
   double leftIliacSealLengthMm = 0.0;
   /// Each zone judged on apposition alone somewhere (the outer wall not traced there): estimated.
@@ -137,9 +161,9 @@ struct FitCheck
   double rightLimbOversizingPercent = 0.0; ///< over the leg's distal 15 mm (median)
   double leftLimbOversizingPercent = 0.0;
   std::vector<OstiumCoverage> ostia;
-  bool migrationRisk = false;                    ///< proximal seal shorter than its minimum
-  std::string oversizingWall = "lumen";          ///< the wall the three summary oversizings are over
-  std::vector<std::string> findings;             ///< the problems, one line each
+  bool migrationRisk = false;           ///< proximal seal or shortest apposition length shorter than its minimum
+  std::string oversizingWall = "lumen"; ///< the wall the three summary oversizings are over
+  std::vector<std::string> findings;    ///< the problems, one line each
   std::array<bool, 2> limbChecked{ true, true }; ///< right, left: the limb was sized and checked
   bool Complete() const { return limbChecked[0] && limbChecked[1]; }
   /// No finding on a complete check (a partial one cannot pass: its limbs are not known).

@@ -588,8 +588,13 @@ void FitCheckSection(const RepairPlan& plan,
   const std::string iliacNeeds = "≥ " + FormatNumber(fit.minimumIliacSealMm, 0) + " mm (the family's minimum)";
   row(std::string("proximal seal on healthy wall") + (fit.sealOnLumenOnly[0] ? lumenOnly : ""), "proximalSealLength",
       fit.proximalSealLengthMm, "mm",
-      proximalNeeds + (fit.proximalSealEnd.empty() ? "" : "; ends where " + fit.proximalSealEnd));
-  row("shortest apposition length (any side)", "", fit.shortestAppositionLengthMm, "mm", proximalNeeds);
+      proximalNeeds + "; uncertainty " + ClinicalText(fit.proximalSealUncertaintyMm, "mm") + " (" +
+        fit.proximalSealUncertaintyWhy + ")" +
+        (fit.proximalSealEnd.empty() ? "" : "; ends where " + fit.proximalSealEnd));
+  row("shortest apposition length (the patient's " + fit.shortestAppositionSide + " side)", "",
+      fit.shortestAppositionLengthMm, "mm",
+      "≥ " + FormatNumber(fit.minimumAppositionLengthMm, 0) + " mm" +
+        (fit.shortestAppositionEnd.empty() ? "" : "; ends where " + fit.shortestAppositionEnd));
   row(std::string("right iliac seal on healthy wall") + (fit.sealOnLumenOnly[1] ? lumenOnly : ""),
       "rightIliacSealLength", fit.rightIliacSealLengthMm, "mm", iliacNeeds);
   row(std::string("left iliac seal on healthy wall") + (fit.sealOnLumenOnly[2] ? lumenOnly : ""), "leftIliacSealLength",

@@ -43,8 +43,10 @@ nlohmann::json MeasurementsToJson(const Measurements& measurements);
 
 /// {"passed", "migrationRisk", "proximalSealLengthMm", "minimumProximalSealMm", "minimumIliacSealMm"
 /// (the minimums the seals were judged against), "proximalSealEnd" (why it ends, words),
-/// "shortestAppositionLengthMm", "proximalCalcifiedPercent", "sealEstimatedOnLumen": {"proximal",
-/// "right", "left"}, "sealDefinition", "rightIliacSealLengthMm",
+/// "proximalSealUncertaintyMm" and "proximalSealUncertainty" (its reason, words),
+/// "shortestAppositionLengthMm", "minimumAppositionLengthMm", "shortestAppositionSide" (the patient's side
+/// of its column, words), "shortestAppositionEnd" (why it ends, words), "proximalCalcifiedPercent",
+/// "sealEstimatedOnLumen": {"proximal", "right", "left"}, "sealDefinition", "rightIliacSealLengthMm",
 /// "leftIliacSealLengthMm", "proximalOversizingPercent", "rightLimbOversizingPercent",
 /// "leftLimbOversizingPercent", "coveredOstia": [names], "ostia": [{"branch", "parent",
 /// "upperAbscissaMm", "lowerAbscissaMm", "overlapMm", "covered"}], "findings": [lines]}.

@@ -10,6 +10,7 @@
 #include "Common/Median.h"
 #include "Measurement/MeasureOuterWall.h"
 #include "Measurement/SectionTilt.h"
+#include "Stent/StentMesh.h"
 
 namespace sgp
 {
@@ -343,6 +344,40 @@ void LeaveOutWhatTheScanDoesNotHold(const MeasureContext& c, Measurements& out)
   }
 }
 
+/// (e) and (f) where no internal iliac origin anchors the landing zone (in a scan that holds the
+/// iliac: a partial plan's are left out above): the leg ran its default length (StentMesh.h), so
+/// the zone was read at a level chosen by no anatomy — on the widened stretch past a cut-off
+/// internal iliac, or on the external iliac. Both diameters are estimates; their definitions and
+/// one warning per side say at which level they were read.
+void MarkLandingZonesReadAtTheDefault(const MeasureContext& c, Measurements& out)
+{
+  for (int side = 0; side < 2; ++side)
+  {
+    const DiameterProfile& leg = out.profiles[std::size_t(1 + side)];
+    if (std::isfinite(c.internalIliacAbscissa[side]) || leg.rings.empty())
+      continue;
+    const std::string s = Side(side);
+    const double end = leg.rings.back().abscissaMm;
+    const std::string level = "the leg's default landing zone, " + FormatNumber(end - landingZoneMm) + " to " +
+                              FormatNumber(end) + " mm down the " + s + " iliac's centerline (a " +
+                              FormatNumber(DefaultLegLengthMm, 0) + " mm leg), as no " + s +
+                              " internal iliac origin was found";
+    std::string marked;
+    int count = 0;
+    for (Measurement& m : out.values)
+      if ((m.name == s + "IliacLumenDiameter" || m.name == s + "IliacDiameter") && std::isfinite(m.value))
+      {
+        m.estimated = true;
+        m.definition += "; estimated: read at " + level;
+        marked += (marked.empty() ? "" : " and ") + m.name + " " + FormatNumber(m.value) + " mm";
+        ++count;
+      }
+    if (!marked.empty())
+      out.warnings.push_back(marked + (count > 1 ? " are" : " is") + " estimated: read at " + level +
+                             " (not 5 mm above it); the common iliac may end above that level.");
+  }
+}
+
 /// How much a tilt of (b)'s plane by SectionTiltDeg changes the lumen's diameter there, mm.
 double BTiltChangeMm(const MeasureContext& c, const LabelImage& lumen)
 {
@@ -520,6 +555,7 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
   MeasureNeckAngles(c, sNeckEnd, a, out);
   MeasureIliacAccess(c, iliacOffset, out);
   LeaveOutWhatTheScanDoesNotHold(c, out);
+  MarkLandingZonesReadAtTheDefault(c, out);
   LeaveOutWhatNeedsTheSite(c, out);
   LeaveOutBOnABend(bTiltChange, out);
   return out;

@@ -19,7 +19,10 @@
 ///    distal 15 mm (the distal landing zone, ending 5 mm above the internal iliac origin), leaving
 ///    out distorted rings (smallest diameter under half the mean: the fit folded there, as in a
 ///    tortuous iliac) — with fewer than two left, the median inscribed-sphere diameter of the
-///    centerline there, and a warning; a distorted ring under (a)–(d) gives a warning;
+///    centerline there, and a warning; a distorted ring under (a)–(d) gives a warning; where no
+///    internal iliac origin was found (the scan in view to below it), the leg ends at its default
+///    length (StentMesh.h DefaultLegLengthMm) and (e)/(f), lumen and outer, are read there: marked
+///    estimated, their definitions naming the level, with a warning;
 ///  - the **outer-wall** (a)–(f) under the names without "Lumen" (`proximalNeckDiameter` …
 ///    `leftIliacDiameter`) and the thrombus, sac and calcium values, at the same levels, from the
 ///    traced VesselWall (MeasureOuterWall.h); without one they are absent (not measured) and a

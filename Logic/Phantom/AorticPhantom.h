@@ -159,6 +159,11 @@ struct PhantomParams
   /// takes it. Not in the truth's landmarks (the internal iliac stays where it was); 0 = none;
   /// [0, the right common iliac's length − 15].
   double rightIliacDecoyBranchMm = 0.0;
+  /// false: that side's internal iliac is not drawn — cut off, as on a vessel surface that ends at
+  /// the common iliac's division; the common iliac runs on into the external iliac alone. The
+  /// truth's internal iliac values stay those of the division.
+  bool rightInternalIliac = true;
+  bool leftInternalIliac = true;
 };
 
 /// Labels of the truth image.

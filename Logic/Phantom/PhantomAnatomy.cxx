@@ -257,7 +257,9 @@ Anatomy BuildAnatomy(const PhantomParams& p)
     const auto lumenOf = [wallMm](double outer) { return outer - std::min(wallMm, outer / 3.0); };
     anatomy.tubes.push_back(StraightTube(prefix + "Iliac", common, r - wallMm));
     anatomy.tubes.push_back(StraightTube(prefix + "ExternalIliac", external, lumenOf(0.75 * r)));
-    anatomy.tubes.push_back(StraightTube(prefix + "InternalIliac", internal, lumenOf(0.55 * r)));
+    const bool internalDrawn = side == 0 ? p.rightInternalIliac : p.leftInternalIliac;
+    if (internalDrawn)
+      anatomy.tubes.push_back(StraightTube(prefix + "InternalIliac", internal, lumenOf(0.55 * r)));
     if (side == 0 && p.rightIliacDecoyBranchMm > 0.0)
     {
       const Point3 from = common[0] + p.rightIliacDecoyBranchMm * (common[1] - common[0]).normalized();
@@ -276,7 +278,8 @@ Anatomy BuildAnatomy(const PhantomParams& p)
     {
       anatomy.wallTubes.push_back(StraightTube(prefix + "IliacWall", common, r));
       anatomy.wallTubes.push_back(StraightTube(prefix + "ExternalIliacWall", external, 0.75 * r));
-      anatomy.wallTubes.push_back(StraightTube(prefix + "InternalIliacWall", internal, 0.55 * r));
+      if (internalDrawn)
+        anatomy.wallTubes.push_back(StraightTube(prefix + "InternalIliacWall", internal, 0.55 * r));
     }
     const double renalZ = side == 0 ? rightRenalZ : leftRenalZ;
     const Point3 hilum = onAxis(renalZ) + renalCourse(lateral);

@@ -309,6 +309,28 @@ void AddOrderRows(RepairPlan& plan)
   }
 }
 
+/// The lumen grid's voxel extent along the aorta at the proximal site (FitCheckContext::
+/// voxelAlongAortaMm): √Σ_i (axis_i · t spacing_i)², the image's axes in LPS, t the aorta's direction
+/// there (its top where the site is not known), mm; NaN without the mask or the aorta.
+double VoxelAlongAortaMm(const RepairPlan& plan)
+{
+  const Centerline& aorta = plan.centerlines.aorta;
+  if (!plan.lumen.mask || aorta.Size() < 2)
+    return std::numeric_limits<double>::quiet_NaN();
+  const Eigen::Vector3d t = TangentAt(aorta, plan.measurements.site.Known() ? plan.measurements.site.abscissaMm : 0.0);
+  const auto& direction = plan.lumen.mask->GetDirection();
+  const auto& spacing = plan.lumen.mask->GetSpacing();
+  double extent = 0.0;
+  for (unsigned axis = 0; axis < 3; ++axis)
+  {
+    double along = 0.0;
+    for (unsigned row = 0; row < 3; ++row)
+      along += direction[row][axis] * t[Eigen::Index(row)];
+    extent += along * along * spacing[axis] * spacing[axis];
+  }
+  return std::sqrt(extent);
+}
+
 /// A partial plan whose limbs cannot be sized: the proximal part of the fit check (proximal seal,
 /// proximal oversizing, covered aortic ostia) with the main body of the family FamilyForMainBody
 /// picks. Each leg takes the limb the selection chose for it where that side was sized, else the
@@ -350,6 +372,7 @@ void SimulateTheMainBodyOnly(const WallDistanceField& wall,
     LayOutOnMeasureMesh(plan.mesh, plan.measurements, family.family, plan.graftDiametersMm, fallback);
   plan.graft = DeployGraft(std::move(layout), wall, params.graft, report.Callback());
   FitCheckContext context;
+  context.voxelAlongAortaMm = VoxelAlongAortaMm(plan);
   context.family = family.family;
   context.limbSized = { limbs[0]->Chosen(), limbs[1]->Chosen() };
   context.minimumIliacSealMm = params.catalog.families[std::size_t(family.catalogIndex)].ifu.iliacSealLengthMm.min;
@@ -399,6 +422,7 @@ void SimulateTheConfiguration(const WallDistanceField& measureWall,
                 " iterations; the surface written is the last one.");
   const DeviceFamily& catalogued = params.catalog.families[std::size_t(family.catalogIndex)];
   FitCheckContext context;
+  context.voxelAlongAortaMm = VoxelAlongAortaMm(plan);
   context.family = family.family;
   context.minimumIliacSealMm = catalogued.ifu.iliacSealLengthMm.min;
   context.minimumOverlapMm = catalogued.junctions.overlapMm.min;
@@ -486,6 +510,7 @@ void ChooseAndSimulateDevice(const WallDistanceField& wall,
                                            { family.rightLimb.diameterMm, family.leftLimb.diameterMm });
   plan.graft = DeployGraft(std::move(layout), wall, params.graft, report.Callback());
   FitCheckContext context;
+  context.voxelAlongAortaMm = VoxelAlongAortaMm(plan);
   context.family = family.family;
   context.minimumIliacSealMm = params.catalog.families[std::size_t(family.catalogIndex)].ifu.iliacSealLengthMm.min;
   plan.fitCheck = CheckGraftFit(plan.graft, plan.measurements, plan.centerlines, &plan.vesselWall, context);

@@ -96,6 +96,7 @@ const std::vector<std::string>& ReturnValueNames()
     "coveredOstia",
     "migrationRisk",
     "fitCheckPassed",
+    "estimatedValues",
     "notMeasured",
   };
   return names;
@@ -124,7 +125,11 @@ std::vector<PlanValue> PlanReturnValues(const RepairPlan& plan)
   put(Boolean("acmConverged", plan.fit.converged, fitted));
   // The table rows: the measurements, then the simulated device's sizes and fit check.
   for (const Measurement& m : plan.rows)
-    put(Number(m.name, m.value));
+  {
+    PlanValue v = Number(m.name, m.value);
+    v.estimated = v.measured && m.estimated;
+    put(v);
+  }
   const bool measured = plan.Reached(PlanStage::Measurements);
   put(Text("proximalSiteSource", ToString(plan.measurements.site.source), measured));
   put(Text("lumenSource", plan.lumenGiven ? "given" : "grown", true));
@@ -155,20 +160,24 @@ std::vector<PlanValue> PlanReturnValues(const RepairPlan& plan)
   put(Boolean("migrationRisk", plan.fitCheck.migrationRisk, simulated));
   put(Boolean("fitCheckPassed", plan.fitCheck.Passed(), simulated));
 
-  // notMeasured, the last name, lists the values before it that the plan does not have.
+  // estimatedValues lists the values before it that are estimates; notMeasured, the last name,
+  // those the plan does not have.
   std::vector<PlanValue> values;
-  std::string notMeasured;
+  std::string notMeasured, estimated;
   for (const std::string& name : ReturnValueNames())
   {
-    if (name == "notMeasured")
+    if (name == "notMeasured" || name == "estimatedValues")
     {
-      values.push_back({ name, notMeasured.empty() ? "none" : notMeasured, true });
+      const std::string& list = name == "notMeasured" ? notMeasured : estimated;
+      values.push_back({ name, list.empty() ? "none" : list, true });
       continue;
     }
     const auto found = byName.find(name);
     values.push_back(found != byName.end() ? found->second : PlanValue{ name, "-1", false });
     if (!values.back().measured)
       notMeasured += (notMeasured.empty() ? "" : ",") + name;
+    if (values.back().estimated)
+      estimated += (estimated.empty() ? "" : ",") + name;
     if (found != byName.end())
       byName.erase(found);
   }

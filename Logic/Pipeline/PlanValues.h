@@ -24,6 +24,7 @@ struct PlanValue
   std::string name; ///< the return parameter's <name>
   std::string text; ///< formatted as the return-parameter file carries it
   bool measured = true;
+  bool estimated = false; ///< an estimate (Measurement::estimated): listed in estimatedValues
 };
 
 /// The names of every return value, in the order of StentGraftSimulation.xml (a test compares).

@@ -147,7 +147,7 @@ StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& p)
     {
       // To 5 mm above the internal iliac origin where the axes meet (the one the iliac lengths use).
       const double origin = InternalIliacOriginAbscissa(tree, side);
-      length = std::isfinite(origin) ? origin - gap - 5.0 : 60.0;
+      length = std::isfinite(origin) ? origin - gap - 5.0 : DefaultLegLengthMm;
     }
     const double iliacLength = iliac[side]->LengthMm();
     const double end = p.legEndAbscissaMm[std::size_t(side)];

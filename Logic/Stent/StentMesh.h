@@ -56,6 +56,9 @@ enum StentSegment : int
   LeftLegSegment = 2
 };
 
+/// A leg's length below its start where no internal iliac origin ends it (legLengthMm 0), mm.
+constexpr double DefaultLegLengthMm = 60.0;
+
 struct StentMeshParams
 {
   int verticesPerRing = 16;   ///< n, a multiple of 4 in [8, 256]
@@ -64,7 +67,7 @@ struct StentMeshParams
   /// Where the trunk starts, as arc length along the aorta from its top, mm (≥ 0); negative: the
   /// proximal implantation site detected from the renal branches (FindProximalSite), or the top.
   double proximalAbscissaMm = -1.0;
-  double legLengthMm = 0.0; ///< 0 = to the internal iliac origin (60 mm without one)
+  double legLengthMm = 0.0; ///< 0 = to the internal iliac origin (DefaultLegLengthMm without one)
   /// Where each leg's last ring lies, as arc length along its iliac (right, left), mm; NaN: by
   /// legLengthMm. Given (a graft whose limbs end there: DeployGraft.h), the leg's rings are evenly
   /// spaced, at most ringSpacingMm apart, from 3 × startRadiusMm (or, for a leg shorter than one

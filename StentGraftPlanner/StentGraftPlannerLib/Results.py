@@ -563,6 +563,8 @@ _FIT_CHECK_KNOWN = frozenset((
     "proximalCalcifiedPercent", "rightIliacSealLengthMm", "leftIliacSealLengthMm", "proximalOversizingPercent",
     "rightLimbOversizingPercent", "leftLimbOversizingPercent", "migrationRisk", "coveredOstia", "ostia",
     "findings", "sealDefinition", "sealEstimatedOnLumen", "minimumProximalSealMm", "minimumIliacSealMm",
+    "minimumAppositionLengthMm", "shortestAppositionSide", "shortestAppositionEnd", "proximalSealUncertaintyMm",
+    "proximalSealUncertainty",
 ))
 
 
@@ -593,12 +595,31 @@ def fitCheckLines(fitCheck, family=None):
         kind, text = _sealLine("proximal seal", fitCheck["proximalSealLengthMm"],
                                "≥ %s mm" % _size(proximalMinimum), proximalMinimum,
                                onLumen.get("proximal") is True)
+        uncertainty = _toFloat(fitCheck.get("proximalSealUncertaintyMm"))
+        if uncertainty is not None:
+            text += "; uncertainty %s" % _mm(uncertainty)
+            seal = _toFloat(fitCheck["proximalSealLengthMm"])
+            if kind == "ok" and seal is not None and seal < proximalMinimum + uncertainty:
+                kind = "indeterminate"  # the fit check's "cannot be excluded"
+            if fitCheck.get("proximalSealUncertainty"):
+                text += " (%s)" % fitCheck["proximalSealUncertainty"]
         if fitCheck.get("proximalSealEnd"):
             text += "; the seal ends where %s" % fitCheck["proximalSealEnd"]
         lines.append((kind, text))
+    appositionMinimum = _toFloat(fitCheck.get("minimumAppositionLengthMm"))
+    apposition = _toFloat(fitCheck.get("shortestAppositionLengthMm"))
     if "shortestAppositionLengthMm" in fitCheck:
-        lines.append(("text", "shortest apposition length %s (the shortest sealed length of the graft's columns "
-                              "from its proximal edge)" % _mm(fitCheck["shortestAppositionLengthMm"])))
+        text = "shortest apposition length %s" % _mm(apposition)
+        if appositionMinimum is not None:
+            text += " (needs ≥ %s mm)" % _size(appositionMinimum)
+        text += ", the shortest sealed length of the graft's columns from its proximal edge"
+        if fitCheck.get("shortestAppositionSide"):
+            text += ", on the patient's %s side" % fitCheck["shortestAppositionSide"]
+        if fitCheck.get("shortestAppositionEnd"):
+            text += "; it ends where %s" % fitCheck["shortestAppositionEnd"]
+        kind = "text" if apposition is None or appositionMinimum is None else (
+            "ok" if apposition >= appositionMinimum else "fail")
+        lines.append((kind, text))
     if "proximalCalcifiedPercent" in fitCheck:
         lines.append(("text", "calcified share of the proximal seal zone %s"
                       % formatValue(_toFloat(fitCheck["proximalCalcifiedPercent"]), "%")))
@@ -617,8 +638,15 @@ def fitCheckLines(fitCheck, family=None):
             lines.append(("text", "%s %s" % (label, formatValue(_toFloat(fitCheck[key]), "%"))))
     risk = fitCheck.get("migrationRisk")
     if isinstance(risk, bool):
-        lines.append(("fail", "migration risk: the proximal seal is shorter than %s" % _mm(proximalMinimum))
-                     if risk else ("text", "migration risk: no"))
+        proximal = _toFloat(fitCheck.get("proximalSealLengthMm"))
+        if not risk:
+            lines.append(("text", "migration risk: no"))
+        elif (apposition is not None and appositionMinimum is not None and apposition < appositionMinimum
+              and not (proximal is not None and proximal < proximalMinimum)):
+            lines.append(("fail", "migration risk: the shortest apposition length is shorter than %s"
+                          % _mm(appositionMinimum)))
+        else:
+            lines.append(("fail", "migration risk: the proximal seal is shorter than %s" % _mm(proximalMinimum)))
     if "coveredOstia" in fitCheck:
         covered = _list(fitCheck["coveredOstia"])
         if not covered:

@@ -1,6 +1,7 @@
 // Device selection on measured phantoms and the simulated graft's fit check (issue 6), through
 // the pipeline the CLI runs: segmentation → centerlines → measure-mode fit → measurements →
 // selection → simulate-mode fit with the device's nominal radii → fit check.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -265,6 +266,143 @@ TEST_F(DefaultPhantomGraft, LimbsNotSized_TheProximalPartChecked)
     // The 18 mm main body's proximal findings are found without the limbs (migration risk).
     EXPECT_EQ(c.findings.empty(), mainBody == 25.0) << (c.findings.empty() ? "" : c.findings.front());
   }
+}
+
+/// The correctly sized graft (25 mm main body, 14 mm limbs) deployed in the default phantom.
+DeployedGraft DeployCorrectlySized(const MeasuredPlan& plan)
+{
+  const GraftLayout layout =
+    LayOutOnMeasureMesh(plan.mesh, plan.measurements, "Test", { 25.0, 14.0, 14.0 }, { 12.0, 12.0 });
+  return DeployGraft(layout, plan.wall, ActiveContourParams::Simulate({ 24.0, 14.0, 14.0 }));
+}
+
+/// The centre of the deployed trunk's ring k (the mean of its vertices), LPS mm.
+Point3 TrunkRingCentre(const DeployedGraft& graft, int k)
+{
+  const StentMesh& mesh = graft.layout.mesh;
+  Point3 centre = Point3::Zero();
+  for (int j = 0; j < mesh.verticesPerRing; ++j)
+    centre += graft.fit.V.row(mesh.Id(TrunkSegment, k, j)).transpose();
+  return centre / mesh.verticesPerRing;
+}
+
+/// The trunk's column whose top vertex points most nearly along `direction` (LPS) from the top ring's centre.
+int ColumnToward(const DeployedGraft& graft, const Eigen::Vector3d& direction)
+{
+  const StentMesh& mesh = graft.layout.mesh;
+  const Point3 centre = TrunkRingCentre(graft, 0);
+  int best = 0;
+  double bestCos = -2.0;
+  for (int j = 0; j < mesh.verticesPerRing; ++j)
+  {
+    const Eigen::Vector3d d = (graft.fit.V.row(mesh.Id(TrunkSegment, 0, j)).transpose() - centre).normalized();
+    if (d.dot(direction) > bestCos)
+    {
+      bestCos = d.dot(direction);
+      best = j;
+    }
+  }
+  return best;
+}
+
+std::string FindingWith(const FitCheck& c, const std::string& words)
+{
+  for (const std::string& f : c.findings)
+    if (f.find(words) != std::string::npos)
+      return f;
+  return "";
+}
+
+// Issue 46 item 4: a fit check passed with a shortest apposition length of 0.0 mm. One column of
+// the correctly sized graft is planted 3 mm off the wall from its third ring down: 15 of its 16
+// vertices still touch, so every ring seals (≥ 90 %) and the proximal seal is unchanged, but that
+// column apposes only from the edge to the second ring — the shortest apposition length, exactly
+// (its sealed share drops from 1 to 0 between the second and third ring: it ends at the second).
+TEST_F(DefaultPhantomGraft, OneColumnOffTheWall_ShortAppositionIsAFindingThatNamesItsSideAndTheGap)
+{
+  DeployedGraft graft = DeployCorrectlySized(*plan);
+  const FitCheck before = CheckGraftFit(graft, plan->measurements, plan->tree, &plan->vesselWall, FitCheckContext{});
+  ASSERT_TRUE(before.Passed()) << before.findings.front();
+  ASSERT_GE(before.shortestAppositionLengthMm, 10.0);
+  const StentMesh& mesh = graft.layout.mesh;
+  const int column = ColumnToward(graft, Eigen::Vector3d::UnitX()); // the patient's left (LPS +x)
+  for (int k = 2; k < mesh.RingsIn(TrunkSegment); ++k)
+    graft.fit.wallDistanceMm[mesh.Id(TrunkSegment, k, column)] = -3.0;
+  const FitCheck c = CheckGraftFit(graft, plan->measurements, plan->tree, &plan->vesselWall, FitCheckContext{});
+  const std::vector<double>& s = mesh.ringAbscissaMm[TrunkSegment];
+  EXPECT_NEAR(c.shortestAppositionLengthMm, s[1] - s[0], 1e-9);
+  // The rings still seal where they did: the planted column only takes one vertex in 16 off the
+  // share of the ring in the sac where the seal ends, which moves its interpolated end by a
+  // fraction of a millimetre (0.24 mm here), and the seal is no finding.
+  EXPECT_NEAR(c.proximalSealLengthMm, before.proximalSealLengthMm, 0.5);
+  EXPECT_GE(c.proximalSealLengthMm, 10.0 + c.proximalSealUncertaintyMm);
+  EXPECT_EQ(c.shortestAppositionSide, "left");
+  EXPECT_EQ(c.shortestAppositionEnd, "it is not in contact with the wall (gap 3.0 mm)");
+  EXPECT_TRUE(c.migrationRisk);
+  EXPECT_FALSE(c.Passed());
+  const std::string finding = FindingWith(c, "shortest apposition length");
+  EXPECT_NE(finding.find("type Ia endoleak and migration risk"), std::string::npos) << finding;
+  EXPECT_NE(finding.find("needs ≥ 10 mm"), std::string::npos) << finding;
+  EXPECT_NE(finding.find("on the patient's left side"), std::string::npos) << finding;
+  EXPECT_NE(finding.find("gap 3.0 mm"), std::string::npos) << finding;
+}
+
+// The same class on thrombus: a traced wall whose planes carry a narrow arc (5 of 64 rays, 8 %:
+// under the 10 % that would end the ring's seal) of 4 mm thrombus under the graft's posterior
+// column, from its third ring down. The rings seal; that column does not, and the finding says why.
+TEST_F(DefaultPhantomGraft, OneColumnOnANarrowArcOfThrombus_ShortAppositionIsAFindingThatSaysThrombus)
+{
+  const DeployedGraft graft = DeployCorrectlySized(*plan);
+  const StentMesh& mesh = graft.layout.mesh;
+  const std::vector<double>& s = mesh.ringAbscissaMm[TrunkSegment];
+  const int rings = mesh.RingsIn(TrunkSegment);
+  const int column = ColumnToward(graft, Eigen::Vector3d::UnitY()); // posterior (LPS +y)
+  const double neck = plan->measurements.Value("proximalNeckLumenDiameter");
+  ASSERT_TRUE(std::isfinite(neck));
+  const auto wallWith = [&](double thrombusMm)
+  {
+    VesselWall wall;
+    for (double at = s.front(); at <= s.back(); at += wall.stepMm)
+    {
+      int k = 0;
+      while (k + 2 < rings && s[std::size_t(k + 1)] < at)
+        ++k;
+      const double f = std::clamp((at - s[std::size_t(k)]) / (s[std::size_t(k + 1)] - s[std::size_t(k)]), 0.0, 1.0);
+      OuterWallPlane plane;
+      plane.abscissaMm = at;
+      plane.centreLps = (1.0 - f) * TrunkRingCentre(graft, k) + f * TrunkRingCentre(graft, k + 1);
+      const Eigen::Vector3d axis = (TrunkRingCentre(graft, k + 1) - TrunkRingCentre(graft, k)).normalized();
+      // Ray 0 points at the column's vertex of the nearer ring, so the arc is centred under it.
+      const int nearer = f < 0.5 ? k : k + 1;
+      Eigen::Vector3d u = graft.fit.V.row(mesh.Id(TrunkSegment, nearer, column)).transpose() - plane.centreLps;
+      u = (u - u.dot(axis) * axis).normalized();
+      plane.uLps = u;
+      plane.vLps = axis.cross(u);
+      plane.thrombusMm = Eigen::VectorXd::Zero(64);
+      if (at >= s[2] - 0.5)
+        for (int ray : { 62, 63, 0, 1, 2 }) // within 11.25° of ray 0
+          plane.thrombusMm[ray] = thrombusMm;
+      plane.calcified.assign(64, false);
+      plane.minCaliperMm = plane.areaDiameterMm = neck;
+      plane.supportedFraction = 1.0;
+      wall.vessels[TrunkSegment].planes.push_back(plane);
+    }
+    return wall;
+  };
+  const VesselWall healthy = wallWith(0.0), thrombus = wallWith(4.0);
+  const FitCheck before = CheckGraftFit(graft, plan->measurements, plan->tree, &healthy, FitCheckContext{});
+  ASSERT_TRUE(before.Passed()) << before.findings.front();
+  const FitCheck c = CheckGraftFit(graft, plan->measurements, plan->tree, &thrombus, FitCheckContext{});
+  EXPECT_NEAR(c.shortestAppositionLengthMm, s[1] - s[0], 1e-9);
+  // The rings still seal where they did: the planted column only takes one vertex in 16 off the
+  // share of the ring in the sac where the seal ends, which moves its interpolated end by a
+  // fraction of a millimetre (0.24 mm here), and the seal is no finding.
+  EXPECT_NEAR(c.proximalSealLengthMm, before.proximalSealLengthMm, 0.5);
+  EXPECT_GE(c.proximalSealLengthMm, 10.0 + c.proximalSealUncertaintyMm);
+  EXPECT_EQ(c.shortestAppositionSide, "posterior");
+  EXPECT_EQ(c.shortestAppositionEnd, "it lies on thrombus 4.0 mm thick (over 2 mm)");
+  EXPECT_FALSE(c.Passed());
+  EXPECT_NE(FindingWith(c, "shortest apposition length").find("on the patient's posterior side"), std::string::npos);
 }
 
 TEST_F(DefaultPhantomGraft, MismatchedMeasurements_InputError)

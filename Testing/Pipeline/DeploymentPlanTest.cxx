@@ -347,6 +347,74 @@ TEST(Deployment, NeckThrombusNineMillimetresBelowTheSite_SealNineMillimetresType
     }
 }
 
+/// Issue 46 item 2: neck thrombus whose onset lies `belowMm` under the site, on slices `sliceMm`
+/// thick (0.8 mm in-plane): on thick slices the onset is blurred over a slice, and a seal read 13 mm
+/// on 2.5 mm slices passed where the healthy neck was 9.3 mm.
+struct NeckThrombusOnSlices
+{
+  double belowMm;
+  double sliceMm;
+};
+
+std::ostream& operator<<(std::ostream& out, const NeckThrombusOnSlices& c)
+{
+  return out << c.belowMm << " mm below the site, " << c.sliceMm << " mm slices";
+}
+
+class NeckThrombusSeries : public ::testing::TestWithParam<NeckThrombusOnSlices>
+{
+};
+
+TEST_P(NeckThrombusSeries, NoPassUnderTheMinimumAndTheUncertaintyFollowsTheSlice)
+{
+  const NeckThrombusOnSlices c = GetParam();
+  PhantomParams p = WallPhantom();
+  p.neckLengthMm = 25.0;
+  p.neckThrombusThicknessMm = 6.0;
+  p.neckThrombusLengthMm = p.neckLengthMm - c.belowMm + 1.3; // as NeckThrombusNineMillimetresBelowTheSite
+  p.spacingMm = { 0.8, 0.8, c.sliceMm };
+  p.noiseSigmaHu = c.sliceMm > 2.0 ? 30.0 : 18.0; // the issue's independent phantoms' noise
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  const RepairPlan plan = Plan(phantom, EndurantParams());
+  ASSERT_TRUE(plan.HasGraft());
+  const double truth = phantom.truth.sizing.healthyNeckLength;
+  const FitCheck& fit = plan.fitCheck;
+  std::cout << "[ seal     ] " << c << ": proximal seal " << fit.proximalSealLengthMm << " ± "
+            << fit.proximalSealUncertaintyMm << " mm; healthy neck (truth) " << truth << " mm; "
+            << (fit.Passed() ? "passed" : "failed") << "\n";
+  // The seal's uncertainty grows with the slice: twice the sampling interval along the aorta, at
+  // least the 2 mm of 1 mm slices. The centerline at the site runs up to 20° off the z axis here
+  // (the renal ostia pull it), so the interval lies between 0.94 × the slice and the slice.
+  EXPECT_LE(fit.proximalSealUncertaintyMm, std::max(2.0, 2.0 * c.sliceMm) + 1e-9);
+  EXPECT_GE(fit.proximalSealUncertaintyMm, std::max(2.0, 2.0 * 0.94 * c.sliceMm));
+  // Not asserted yet (issue 46 item 2 open): the reading within its uncertainty of the truth. On
+  // this series it reads 3.0-3.1 mm long on 0.8 and 1 mm slices too (9 for 5.9, 15 for 11.9, 17
+  // for 13.9 mm), a bias the uncertainty does not cover; its cause is not yet found.
+  // The safety the issue asks for: no passed fit check on a healthy neck under the 10 mm minimum.
+  if (truth < 10.0)
+  {
+    EXPECT_FALSE(fit.Passed());
+    EXPECT_TRUE(fit.migrationRisk);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Issue46,
+                         NeckThrombusSeries,
+                         ::testing::Values(NeckThrombusOnSlices{ 6.0, 0.8 },
+                                           NeckThrombusOnSlices{ 6.0, 2.5 },
+                                           NeckThrombusOnSlices{ 9.0, 1.0 },
+                                           NeckThrombusOnSlices{ 9.0, 2.5 },
+                                           NeckThrombusOnSlices{ 9.0, 3.0 },
+                                           NeckThrombusOnSlices{ 12.0, 1.0 },
+                                           NeckThrombusOnSlices{ 12.0, 3.0 },
+                                           NeckThrombusOnSlices{ 14.0, 0.8 },
+                                           NeckThrombusOnSlices{ 14.0, 2.5 }),
+                         [](const ::testing::TestParamInfo<NeckThrombusOnSlices>& info)
+                         {
+                           return "Below" + std::to_string(int(info.param.belowMm)) + "mm_Slices" +
+                                  std::to_string(int(info.param.sliceMm * 10.0)) + "tenthsMm";
+                         });
+
 TEST(Deployment, SameNeckWithoutThrombus_SealIsTheNeckLength)
 {
   const AorticPhantom phantom = GenerateAorticPhantom(NeckThrombusNineMillimetresBelowTheSite(false));

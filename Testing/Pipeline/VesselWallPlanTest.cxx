@@ -314,6 +314,55 @@ TEST(VesselWall, WallWithoutThrombus_OuterIsLumenPlusTwoWalls)
   EXPECT_LT(m.Value("neckThrombusArc"), 10.0);
 }
 
+// Issue 46 item 6: with no internal iliac in view the leg runs its default length and (e)/(f) are
+// read at a level no anatomy chose (here past the division, on the external iliac). The right
+// internal iliac is not drawn; the left is: only the right values are marked estimated, their
+// definitions and a warning name the level, and the return file lists them in estimatedValues.
+TEST(VesselWall, NoInternalIliacInView_LandingZoneReadAtTheDefaultIsAnEstimate)
+{
+  PhantomParams p;
+  p.wallThicknessMm = 2.0;
+  p.tissueHu = -100.0;
+  p.rightInternalIliac = false;
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  PlanRequest request;
+  request.through = PlanStage::Measurements;
+  const RepairPlan plan = PlanRepair(phantom.ct, phantom.truth.seedLps, request, testing::ShippedPlanParams());
+  const Measurements& m = plan.measurements;
+  ASSERT_FALSE(std::isfinite(m.internalIliacAbscissaMm[0])); // the right one is not in view
+  ASSERT_TRUE(std::isfinite(m.internalIliacAbscissaMm[1]));
+  for (const char* name : { "rightIliacLumenDiameter", "rightIliacDiameter" })
+  {
+    const Measurement* value = m.Find(name);
+    ASSERT_NE(value, nullptr) << name;
+    ASSERT_TRUE(std::isfinite(value->value)) << name;
+    EXPECT_TRUE(value->estimated) << name;
+    EXPECT_NE(value->definition.find("estimated: read at the leg's default landing zone"), std::string::npos)
+      << value->definition;
+    EXPECT_NE(value->definition.find("(a 60 mm leg), as no right internal iliac origin was found"), std::string::npos)
+      << value->definition;
+  }
+  for (const char* name : { "leftIliacLumenDiameter", "leftIliacDiameter" })
+  {
+    ASSERT_NE(m.Find(name), nullptr) << name;
+    EXPECT_FALSE(m.Find(name)->estimated) << name;
+  }
+  int warnings = 0;
+  for (const std::string& w : m.warnings)
+    warnings +=
+      w.find("rightIliacLumenDiameter") == 0 && w.find("are estimated: read at the leg's default") != std::string::npos
+        ? 1
+        : 0;
+  EXPECT_EQ(warnings, 1);
+  std::string estimated;
+  for (const PlanValue& v : PlanReturnValues(plan))
+    if (v.name == "estimatedValues")
+      estimated = "," + v.text + ",";
+  EXPECT_NE(estimated.find(",rightIliacDiameter,"), std::string::npos) << estimated;
+  EXPECT_NE(estimated.find(",rightIliacLumenDiameter,"), std::string::npos) << estimated;
+  EXPECT_EQ(estimated.find(",leftIliac"), std::string::npos) << estimated;
+}
+
 TEST(VesselWall, OuterNeck25Lumen22_MainBodyOversizedOnTheOuterWall)
 {
   // 25 mm outer neck, 1.5 mm wall: a 22 mm lumen. The IFU's 10–20 % is over the outer wall.

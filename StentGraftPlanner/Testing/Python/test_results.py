@@ -545,8 +545,8 @@ class FitCheckTest(unittest.TestCase):
             ("fail", "The simulated graft does not pass the fit check."),
             ("ok", "proximal seal on healthy wall 28.0 mm (needs ≥ 10 mm); the seal ends where the aorta widens beyond "
                    "110 % of (a) under 100 % of the ring (the aneurysm)"),
-            ("text", "shortest apposition length 26.9 mm (the shortest sealed length of the graft's columns from its "
-                     "proximal edge)"),
+            ("text", "shortest apposition length 26.9 mm, the shortest sealed length of the graft's columns from its "
+                     "proximal edge"),  # a report before issue 46 item 4: no minimum, no side
             ("text", "calcified share of the proximal seal zone 0 %"),
             ("fail", "right iliac seal on healthy wall 3.2 mm (needs ≥ 15 mm)"),  # the family's minimum, not 10 mm
             ("ok", "left iliac seal on healthy wall 47.3 mm (needs ≥ 15 mm)"),
@@ -559,6 +559,33 @@ class FitCheckTest(unittest.TestCase):
         self.assertEqual(lines[start + 12][0], "fail")
         self.assertTrue(lines[start + 12][1].startswith("type Ib endoleak risk: right iliac seal 3.2 mm"))
         self.assertFalse([text for kind, text in lines[start:] if "Mm" in text or "ostia:" in text])  # words only
+
+    def test_ShortApposition_FailsWithItsSideAndCause(self):
+        # Issue 46 item 4: the rings seal (28 mm) but one column apposes over 4 mm only.
+        fitCheck = {"proximalSealLengthMm": 28.0, "minimumProximalSealMm": 10, "shortestAppositionLengthMm": 4.04,
+                    "minimumAppositionLengthMm": 10, "shortestAppositionSide": "left posterior",
+                    "shortestAppositionEnd": "it lies on thrombus 3.2 mm thick (over 2 mm)", "migrationRisk": True}
+        lines = Results.fitCheckLines(fitCheck)
+        self.assertIn(("fail", "shortest apposition length 4.0 mm (needs ≥ 10 mm), the shortest sealed length of the "
+                               "graft's columns from its proximal edge, on the patient's left posterior side; it "
+                               "ends where it lies on thrombus 3.2 mm thick (over 2 mm)"), lines)
+        self.assertIn(("fail", "migration risk: the shortest apposition length is shorter than 10.0 mm"), lines)
+        fitCheck["shortestAppositionLengthMm"] = 12.0
+        fitCheck["migrationRisk"] = False
+        lines = Results.fitCheckLines(fitCheck)
+        self.assertEqual([kind for kind, text in lines if text.startswith("shortest apposition")], ["ok"])
+        self.assertFalse([text for kind, text in lines if "Mm" in text])  # no field listed as a name
+
+    def test_SealWithinItsUncertainty_Indeterminate(self):
+        # Issue 46 item 2: 13.0 mm on 2.5 mm slices, uncertain by 5.0 mm: the risk cannot be excluded.
+        fitCheck = {"proximalSealLengthMm": 13.0, "minimumProximalSealMm": 10, "proximalSealUncertaintyMm": 5.0,
+                    "proximalSealUncertainty": "the site's and the seal end's 2.5 mm each, the scan's sampling "
+                                               "interval along the aorta"}
+        self.assertEqual(Results.fitCheckLines(fitCheck), [
+            ("indeterminate", "proximal seal on healthy wall 13.0 mm (needs ≥ 10 mm); uncertainty 5.0 mm (the site's "
+                              "and the seal end's 2.5 mm each, the scan's sampling interval along the aorta)")])
+        fitCheck["proximalSealLengthMm"] = 15.5
+        self.assertEqual(Results.fitCheckLines(fitCheck)[0][0], "ok")
 
     def test_EstimatedSeals_PartialPlanAndRisks(self):
         fitCheck = {"proximalSealLengthMm": 9.25, "sealEstimatedOnLumen": {"proximal": True, "right": False},
