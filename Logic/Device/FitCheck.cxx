@@ -210,15 +210,6 @@ std::string PatientSide(const Point3& centre, const Point3& vertex, const Eigen:
   return words;
 }
 
-/// The centre of ring k of `segment` on the deployed surface (the mean of its vertices), LPS mm.
-Point3 RingCentre(const StentMesh& mesh, const Points& V, int segment, int k)
-{
-  Point3 centre = Point3::Zero();
-  for (int j = 0; j < mesh.verticesPerRing; ++j)
-    centre += V.row(mesh.Id(segment, k, j)).transpose();
-  return centre / double(mesh.verticesPerRing);
-}
-
 std::string ComponentWords(const ConfiguredComponent& c)
 {
   return c.item.name + (c.item.code.empty() ? "" : " " + c.item.code);
@@ -330,10 +321,10 @@ FitCheck CheckGraftFit(const DeployedGraft& graft,
     }
   }
   {
-    const Point3 top = RingCentre(mesh, V, TrunkSegment, 0);
-    Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
-    if (trunkRings > 1 && (RingCentre(mesh, V, TrunkSegment, 1) - top).norm() > 1e-9)
-      axis = (RingCentre(mesh, V, TrunkSegment, 1) - top).normalized();
+    const Point3 top = RingCentroid(mesh, V, TrunkSegment, 0);
+    const Eigen::Vector3d down =
+      trunkRings > 1 ? Eigen::Vector3d(RingCentroid(mesh, V, TrunkSegment, 1) - top) : Eigen::Vector3d::Zero();
+    const Eigen::Vector3d axis = down.norm() > 1e-9 ? down.normalized() : Eigen::Vector3d::UnitZ();
     c.shortestAppositionSide = PatientSide(top, V.row(mesh.Id(TrunkSegment, 0, shortestColumn)).transpose(), axis);
     if (shortestEnd >= 0)
     {

@@ -125,6 +125,14 @@ void ValidateStentMeshParams(const StentMeshParams& p)
       CheckRange("legEndAbscissaMm", end, p.startRadiusMm, 1e3, "mm");
 }
 
+Point3 RingCentroid(const StentMesh& mesh, const Points& V, int segment, int k)
+{
+  Point3 centre = Point3::Zero();
+  for (int j = 0; j < mesh.verticesPerRing; ++j)
+    centre += V.row(mesh.Id(segment, k, j)).transpose();
+  return centre / double(mesh.verticesPerRing);
+}
+
 StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& p)
 {
   ValidateStentMeshParams(p);

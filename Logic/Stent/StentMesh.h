@@ -127,6 +127,10 @@ void ValidateStentMeshParams(const StentMeshParams& params);
 
 StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& params = {});
 
+/// The centre of ring k of `segment` of a surface on `mesh` (V: #V×3, the mesh's own or a fitted
+/// one): the mean of its vertices, LPS mm.
+Point3 RingCentroid(const StentMesh& mesh, const Points& V, int segment, int k);
+
 /// Where the stent's surface can go while it is fitted: a ball around each ring's centre of
 /// radius 1.5 × the vessel's inscribed radius there (a cross-section may be elliptical) + 10 mm
 /// (the wall field's 5 mm band, two voxels, margin) — the region for WallDistanceField (LPS mm).

@@ -279,11 +279,7 @@ DeployedGraft DeployCorrectlySized(const MeasuredPlan& plan)
 /// The centre of the deployed trunk's ring k (the mean of its vertices), LPS mm.
 Point3 TrunkRingCentre(const DeployedGraft& graft, int k)
 {
-  const StentMesh& mesh = graft.layout.mesh;
-  Point3 centre = Point3::Zero();
-  for (int j = 0; j < mesh.verticesPerRing; ++j)
-    centre += graft.fit.V.row(mesh.Id(TrunkSegment, k, j)).transpose();
-  return centre / mesh.verticesPerRing;
+  return RingCentroid(graft.layout.mesh, graft.fit.V, TrunkSegment, k);
 }
 
 /// The trunk's column whose top vertex points most nearly along `direction` (LPS) from the top ring's centre.

@@ -292,19 +292,25 @@ INSTANTIATE_TEST_SUITE_P(Deployment,
                                            NeckCase{ "NeckThrombus", 0.0, 1.0, 4.0 }),
                          [](const auto& info) { return std::string(info.param.name); });
 
-/// The phantom of issue 30's seal test: a 25 mm neck whose crescent of thrombus, 6 mm thick,
-/// reaches up the neck so that it lies at least 2 mm thick under a quarter of the circumference
-/// from 9 mm below the site (its top tapers over 3 mm: AorticWall.h).
-PhantomParams NeckThrombusNineMillimetresBelowTheSite(bool thrombus)
+/// A 25 mm neck whose crescent of thrombus, 6 mm thick, reaches up the neck so that it lies at
+/// least 2 mm thick under a quarter of the circumference from `belowMm` under the site (its top
+/// tapers over 3 mm: AorticWall.h); no thrombus when belowMm ≤ 0.
+PhantomParams NeckThrombusBelowTheSite(double belowMm)
 {
   PhantomParams p = WallPhantom();
   p.neckLengthMm = 25.0;
-  if (thrombus)
+  if (belowMm > 0.0)
   {
     p.neckThrombusThicknessMm = 6.0;
-    p.neckThrombusLengthMm = 25.0 - 9.0 + 1.3; // the taper's first 1.3 mm stay under 2 mm over a quarter
+    p.neckThrombusLengthMm = p.neckLengthMm - belowMm + 1.3; // the taper's first 1.3 mm stay under 2 mm over a quarter
   }
   return p;
+}
+
+/// The phantom of issue 30's seal test: the thrombus 9 mm below the site, or none.
+PhantomParams NeckThrombusNineMillimetresBelowTheSite(bool thrombus)
+{
+  return NeckThrombusBelowTheSite(thrombus ? 9.0 : 0.0);
 }
 
 /// Prints the measured seal beside the truth it is judged against (for the notes; the
@@ -368,10 +374,7 @@ class NeckThrombusSeries : public ::testing::TestWithParam<NeckThrombusOnSlices>
 TEST_P(NeckThrombusSeries, NoPassUnderTheMinimumAndTheUncertaintyFollowsTheSlice)
 {
   const NeckThrombusOnSlices c = GetParam();
-  PhantomParams p = WallPhantom();
-  p.neckLengthMm = 25.0;
-  p.neckThrombusThicknessMm = 6.0;
-  p.neckThrombusLengthMm = p.neckLengthMm - c.belowMm + 1.3; // as NeckThrombusNineMillimetresBelowTheSite
+  PhantomParams p = NeckThrombusBelowTheSite(c.belowMm);
   p.spacingMm = { 0.8, 0.8, c.sliceMm };
   p.noiseSigmaHu = c.sliceMm > 2.0 ? 30.0 : 18.0; // the issue's independent phantoms' noise
   const AorticPhantom phantom = GenerateAorticPhantom(p);
