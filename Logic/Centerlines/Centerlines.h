@@ -26,6 +26,14 @@ struct Centerline
   /// A side branch of the aorta: why it has its name (or none) — the side it leaves from, its
   /// course, calibre and height, and the rule (LabelAortoIliacTree.h, step 4); else empty.
   std::string evidence;
+  /// A renal artery: the distance from its fitted axis at its mouth to its upstream and its
+  /// downstream wall (along the parent's direction), measured on the CT (MeasureRenalMouthWalls,
+  /// ProximalSite.h), mm; NaN: not measured, and its ostium's edges use its inscribed radius.
+  std::array<double, 2> mouthWallMm{ std::numeric_limits<double>::quiet_NaN(),
+                                     std::numeric_limits<double>::quiet_NaN() };
+  /// The walls were read on the CT but put the ostium's edges within half a voxel of the inscribed
+  /// radius's, which stands (mouthWallMm NaN): by how much they differ, mm; NaN: not read.
+  double mouthEdgeAgreementMm = std::numeric_limits<double>::quiet_NaN();
 
   Eigen::Index Size() const { return points.rows(); }
   double LengthMm() const { return Size() ? abscissaMm[Size() - 1] : 0.0; }

@@ -416,9 +416,25 @@ FitCheck CheckGraftFit(const DeployedGraft& graft,
     if (!ostium.found)
       continue;
     const std::vector<double>& s = mesh.ringAbscissaMm[std::size_t(b.segment)];
-    OstiumCoverage o{ b.branch, b.parent->name, ostium.upperAbscissaMm, ostium.lowerAbscissaMm };
+    OstiumCoverage o;
+    o.branch = b.branch;
+    o.parent = b.parent->name;
+    o.upperAbscissaMm = ostium.upperAbscissaMm;
+    o.lowerAbscissaMm = ostium.lowerAbscissaMm;
     o.overlapMm = std::min(s.back(), ostium.lowerAbscissaMm) - std::max(s.front(), ostium.upperAbscissaMm);
     o.covered = o.overlapMm > p.ostiumOverlapToleranceMm;
+    const bool renal = std::string(b.branch).find("Renal") != std::string::npos;
+    // A configured graft is deployed at the plan's target, which carries the site's margin; an
+    // unconfigured one lies on the measure-mode mesh from the site as read (its coverage as read).
+    if (layout.configured && b.segment == TrunkSegment && (!renal || measured.site.source == ProximalSiteSource::Renal))
+    {
+      const OstiumEdgeUncertainty u = EdgeUncertainty(*branch, tree.largestSpacingMm);
+      o.edgeUncertaintyMm = u.mm;
+      o.edgeUncertaintyWhy = u.why;
+      // 1 µm: a graft placed at SiteMarginMm lies exactly at the bound, and its abscissa is read back
+      // through the mesh.
+      o.mayBeCovered = !o.covered && o.overlapMm + u.mm > p.ostiumOverlapToleranceMm + 1e-3;
+    }
     c.ostia.push_back(o);
   }
 
@@ -509,9 +525,21 @@ FitCheck CheckGraftFit(const DeployedGraft& graft,
     if (o.covered)
       c.findings.push_back(o.branch + " ostium covered by the deployed graft (" + Mm(o.overlapMm) + " of it on " +
                            o.parent + ")");
+    else if (o.mayBeCovered)
+      c.findings.push_back(o.branch + " ostium may be covered by the deployed graft: the graft's edge lies " +
+                           Mm(std::max(0.0, -o.overlapMm)) +
+                           " from the ostium's edge, within that edge's uncertainty of " + Mm(o.edgeUncertaintyMm) +
+                           " (" + o.edgeUncertaintyWhy + ")");
   for (const ConfigurationFinding& f : context.configurationFindings)
     c.findings.push_back(f.text + " — option: " + f.option);
   return c;
+}
+
+double SiteMarginMm(const ProximalSite& site, const FitCheckParams& params)
+{
+  return site.source == ProximalSiteSource::Renal
+           ? std::max(0.0, site.edgeUncertaintyMm - params.ostiumOverlapToleranceMm)
+           : 0.0;
 }
 
 std::vector<Measurement> FitCheckRows(const FitCheck& c, const DeployedGraft& graft)

@@ -59,7 +59,12 @@
 ///    zone; oversizing outside [oversizingMinPercent, oversizingMaxPercent] there;
 ///  - an ostium the deployed graft covers: renal, superior mesenteric and coeliac on the aorta by
 ///    the trunk's extent, each internal iliac by its leg's (FindBranchOstium, overlap beyond
-///    `ostiumOverlapToleranceMm`);
+///    `ostiumOverlapToleranceMm`); an aortic ostium the graft may cover: one it would cover were
+///    its edge where its uncertainty lets it lie (EdgeUncertainty, ProximalSite.h; issue 46 item 1;
+///    the renals' when the site was found from them, not from a person's point; a configured graft
+///    only, deployed at the plan's target with its margin — an unconfigured one, on the measure-mode
+///    mesh from the site as read, is judged as read) — the internal iliacs' edges are taken as read
+///    (their tolerance is issue 47's);
 ///  - the configuration's findings (limb compression, the gate below the aortic bifurcation, a
 ///    common iliac too short, an iliac too wide, …), each as it stands.
 /// Limbs not sized (a partial plan: the scan ends above the iliac landing zones): that leg was
@@ -127,7 +132,18 @@ struct OstiumCoverage
   double lowerAbscissaMm = 0.0;
   double overlapMm = 0.0; ///< of the graft's extent with it (≤ 0: apart)
   bool covered = false;
+  double edgeUncertaintyMm = 0.0; ///< how far its edges may lie from where they are read, mm
+  std::string edgeUncertaintyWhy;
+  /// Not covered as read, but covered (beyond the tolerance) were its edges edgeUncertaintyMm
+  /// further toward the graft: a finding too.
+  bool mayBeCovered = false;
 };
+
+/// How far below the lowest renal ostium's lower edge as read the main body's fabric is deployed
+/// (before PlanParams::deploymentOffsetMm) so that it covers no part of the ostium wherever its
+/// edge lies within its uncertainty: max(0, site.edgeUncertaintyMm − ostiumOverlapToleranceMm), mm
+/// (0.5 mm on slices up to 2 mm, 1 mm on 3 mm: EdgeUncertainty; 0 for a person's point).
+double SiteMarginMm(const ProximalSite& site, const FitCheckParams& params = {});
 
 struct FitCheck
 {

@@ -97,6 +97,8 @@ nlohmann::json DeploymentToJson(const RepairPlan& plan)
     { "flowDividerMm", c->configured ? Json(c->flowDividerMm) : Json(nullptr) },
     { "anatomy",
       { { "deploymentTargetAbscissaMm", target },
+        { "deploymentMarginMm", plan.deploymentMarginMm },
+        { "siteEdgeUncertaintyMm", plan.measurements.site.edgeUncertaintyMm },
         { "targetToBifurcationMm", NumberOrNull(toBifurcation) },
         { "targetToRightInternalIliacMm", NumberOrNull(toBifurcation + plan.measurements.Value("rightIliacLength")) },
         { "targetToLeftInternalIliacMm", NumberOrNull(toBifurcation + plan.measurements.Value("leftIliacLength")) } } },

@@ -612,7 +612,11 @@ void FitCheckSection(const RepairPlan& plan,
   for (const OstiumCoverage& o : fit.ostia)
     out << "<tr><td>" << Escape(ValueLabel(o.branch)) << "</td><td>" << Escape(o.parent) << "</td><td class=\"num\">"
         << Num(o.upperAbscissaMm) << " … " << Num(o.lowerAbscissaMm) << "</td><td class=\"num\">"
-        << Escape(ClinicalText(o.overlapMm, "mm")) << "</td><td" << (o.covered ? " class=\"fail\">yes" : ">no")
+        << Escape(ClinicalText(o.overlapMm, "mm")) << "</td><td"
+        << (o.covered        ? " class=\"fail\">yes"
+            : o.mayBeCovered ? " class=\"fail\">cannot be excluded (its edge within " +
+                                 Escape(ClinicalText(o.edgeUncertaintyMm, "mm")) + ")"
+                             : ">no")
         << "</td></tr>";
   out << "</table><table><tr><th>segment</th><th>vertices</th><th>sealing</th><th>apposition gap median</th>"
          "<th>largest</th></tr>";

@@ -146,7 +146,9 @@ nlohmann::json FitCheckToJson(const FitCheck& check)
                       { "upperAbscissaMm", o.upperAbscissaMm },
                       { "lowerAbscissaMm", o.lowerAbscissaMm },
                       { "overlapMm", o.overlapMm },
-                      { "covered", o.covered } });
+                      { "covered", o.covered },
+                      { "mayBeCovered", o.mayBeCovered },
+                      { "edgeUncertaintyMm", o.edgeUncertaintyMm } });
     if (o.covered)
       covered.push_back(o.branch);
   }

@@ -83,6 +83,7 @@ void ValidatePhantomParams(const PhantomParams& p)
   check("sacAxisRatio", p.sacAxisRatio, 1, 1.5, "");
   check("bolusGradientHuPerCm", p.bolusGradientHuPerCm, -10, 10, "HU/cm");
   check("aortaAboveSiteMm", p.aortaAboveSiteMm, 20, 400, "mm");
+  check("renalRadiusMm", p.renalRadiusMm, 2, 5, "mm");
   check("renalDescentDeg", p.renalDescentDeg, 0, 65, "degrees");
   check("renalTakeoffDeg", p.renalTakeoffDeg, -60, 60, "degrees");
   check("renalStubMm", p.renalStubMm, 0, 60, "mm");

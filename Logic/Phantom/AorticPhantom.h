@@ -11,7 +11,7 @@
 ///    `maxAneurysmDiameterMm` near mid-sac — so the sac starts at a shoulder and the neck has a
 ///    definite end, as the neck-length rule needs; the distal-neck radius from the sac to the
 ///    bifurcation.
-///  - **renal arteries** (radius 3 mm): the right one at the lower level (it is the lowest renal;
+///  - **renal arteries** (radius `renalRadiusMm`, 3 mm): the right one at the lower level (it is the lowest renal;
 ///    the lower edge of its ostium is the proximal implantation site), the left 6 mm higher;
 ///    they run horizontally (laterally and slightly posteriorly) to the kidneys' hila. The patient's right is −x in
 ///    LPS. The right renal leaves the aortic axis where its ostium's lowest point on the lumen's
@@ -136,6 +136,7 @@ struct PhantomParams
   // them). With every one at its default the phantom is the one above, voxel for voxel.
   double aortaAboveSiteMm = 80.0; ///< the aorta's top above the site, mm; [20, 400] (250+: into the chest)
   bool includeRenals = true;      ///< false: no renal artery (the truth's site stays where it was)
+  double renalRadiusMm = 3.0;     ///< both renals' lumen radius (ostia of 4–10 mm across), mm; [2, 5]
   double renalDescentDeg = 0.0;   ///< both renals run down by this from horizontal; [0, 65]
   /// Both renals turned about the vertical from their lateral course: positive anterior (−y),
   /// negative posterior; [−60, 60].

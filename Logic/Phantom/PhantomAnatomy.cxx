@@ -207,7 +207,7 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   const Eigen::Vector3d rightRenalDirection = renalCourse(-1.0).normalized();
   const double siteLumenRadius = wall ? wall->LumenRadius(siteZ) : rNeck;
   const double rightRenalZ =
-    siteZ + OstiumLowerEdgeDepthMm(siteLumenRadius, renalRadiusMm, rightRenalDirection, neckDirection);
+    siteZ + OstiumLowerEdgeDepthMm(siteLumenRadius, p.renalRadiusMm, rightRenalDirection, neckDirection);
   const double leftRenalZ = rightRenalZ + 6.0;
   if (wall && wall->HasThrombus())
   {
@@ -284,7 +284,7 @@ Anatomy BuildAnatomy(const PhantomParams& p)
     const double renalZ = side == 0 ? rightRenalZ : leftRenalZ;
     const Point3 hilum = onAxis(renalZ) + renalCourse(lateral);
     if (p.includeRenals)
-      AddRenal(anatomy, prefix + "Renal", onAxis(renalZ), hilum, renalRadiusMm, siteLumenRadius, p);
+      AddRenal(anatomy, prefix + "Renal", onAxis(renalZ), hilum, p.renalRadiusMm, siteLumenRadius, p);
     if (p.includeKidneys)
     {
       anatomy.kidneys.push_back({ onAxis(renalZ) + Point3(lateral * 80.0, 15.0, -10.0), Point3(22.0, 18.0, 50.0) });

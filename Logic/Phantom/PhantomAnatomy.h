@@ -19,7 +19,6 @@ namespace sgp::phantom
 {
 
 constexpr double pi = 3.14159265358979323846;
-constexpr double renalRadiusMm = 3.0;
 constexpr double renalHilumLateralMm = 64.0, renalHilumPosteriorMm = 10.0; ///< from the renal's origin
 constexpr double visceralRadiusMm = 3.5;
 constexpr double accessoryRenalRadiusMm = 2.0;

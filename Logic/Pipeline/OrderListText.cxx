@@ -78,6 +78,10 @@ std::vector<std::string> OrderLines(const RepairPlan& plan)
         (std::abs(offset) < 0.05
            ? std::string("at the lower edge of the lowest renal ostium")
            : Mm(std::abs(offset)) + (offset > 0 ? " below" : " above") + " the lower edge of the lowest renal ostium") +
+        (plan.deploymentMarginMm > 0.0 ? " (" + Mm(plan.deploymentMarginMm) + " of it a margin: that edge may lie " +
+                                           Mm(plan.measurements.site.edgeUncertaintyMm) + " lower, " +
+                                           plan.measurements.site.edgeUncertaintyWhy + ")"
+                                       : std::string()) +
         ", flow divider " + Mm(c->flowDividerMm) + " and contralateral gate end " + Mm(c->gateEndMm) + " below it (" +
         Mm(c->gateClearanceMm) + " above the aortic bifurcation), ipsilateral leg to " + Mm(part.distalMm);
     else

@@ -86,11 +86,13 @@ void SegmentLumen(const CtImage& ct,
 void NoEndograft(const EndograftEvidence& metal)
 {
   if (metal.found)
-    throw InputError("The aorta's lumen holds metal: stent rings up to " + FormatNumber(metal.maximumHu, 0) +
-                     " HU all around it over " + FormatNumber(metal.ringLengthMm, 0) + " mm (z " +
-                     FormatNumber(metal.ringFromZ, 0) + " to " + FormatNumber(metal.ringToZ, 0) +
-                     " mm LPS), so an endograft or another metal device is already in place; this plan is for "
-                     "pre-operative CT angiograms of an unrepaired aorta.");
+    throw InputError(
+      std::string(metal.aroundSeed ? "The aorta holds metal around the seed" : "The aorta's lumen holds metal") +
+      ": stent rings up to " + FormatNumber(metal.maximumHu, 0) + " HU all around it over " +
+      FormatNumber(metal.ringLengthMm, 0) + " mm (z " + FormatNumber(metal.ringFromZ, 0) + " to " +
+      FormatNumber(metal.ringToZ, 0) +
+      " mm LPS), so an endograft or another metal device is already in place; this plan is for "
+      "pre-operative CT angiograms of an unrepaired aorta.");
 }
 
 void ExtractCenterlines(const PlanRequest& request,
@@ -462,8 +464,10 @@ void ChooseAndSimulateDevice(const WallDistanceField& wall,
   // No site, no target: the catalogue is checked on the values that were measured (the neck's
   // criteria indeterminate), nothing is configured or simulated.
   const bool siteKnown = plan.measurements.site.Known();
-  plan.deploymentTargetAbscissaMm = siteKnown ? plan.measurements.site.abscissaMm + params.deploymentOffsetMm
-                                              : std::numeric_limits<double>::quiet_NaN();
+  plan.deploymentMarginMm = SiteMarginMm(plan.measurements.site);
+  plan.deploymentTargetAbscissaMm =
+    siteKnown ? plan.measurements.site.abscissaMm + plan.deploymentMarginMm + params.deploymentOffsetMm
+              : std::numeric_limits<double>::quiet_NaN();
   std::optional<ConfigurationAnatomy> lengths;
   if (siteKnown)
     lengths = ConfigurationLengths(plan.centerlines, plan.measurements, plan.deploymentTargetAbscissaMm);
@@ -601,6 +605,10 @@ RepairPlan PlanRepair(CtImage::ConstPointer ct,
     plan.seedAutomatic = true;
     plan.seedDescription = found.description;
   }
+  // A seed inside an endograft: the growing may stop at its struts and leave too little lumen for
+  // the check beside the lumen below (FindEndograft.h, "around the seed"); one box of HU.
+  if (ct && (seedLps || !request.givenLumen))
+    NoEndograft(FindEndograftAroundSeed(*ct, plan.seedLps));
   if (request.givenLumen)
   {
     report.Begin("SegmentLumen", "Taking the lumen from the segmentation given");
@@ -617,7 +625,7 @@ RepairPlan PlanRepair(CtImage::ConstPointer ct,
     // the thinning's buffers are added to the peak.
     std::future<EndograftEvidence> metal =
       std::async(std::launch::async, [&] { return FindEndograft(*ct, *plan.lumen.mask, plan.lumen.box); });
-    around = request.through >= PlanStage::Measurements
+    around = request.through >= PlanStage::StentSurface
                ? CropAroundLumen(*ct, *plan.lumen.mask, params.wall.outer.maxRadiusMm)
                : nullptr;
     NoEndograft(metal.get());
@@ -638,9 +646,11 @@ RepairPlan PlanRepair(CtImage::ConstPointer ct,
   // The wall stage needs the site, not the fit: it runs on the second core while the stent
   // surface is fitted (declared after `around` and `plan`, so it is waited for before either goes).
   std::future<TracedWall> traced;
+  if (around) // the renals' walls on the CT, for the site and the coverage check (ProximalSite.h)
+    MeasureRenalMouthWalls(plan.centerlines, *around);
   const auto startWall = [&]
   {
-    if (around)
+    if (around && request.through >= PlanStage::Measurements)
       traced = std::async(std::launch::async, [&] { return TraceWall(*around, request, params, plan); });
   };
   const WallDistanceField wall = FitStentSurface(request, params, report, plan, startWall);

@@ -117,7 +117,9 @@ struct PlanParams
   ActiveContourParams graft = ActiveContourParams::Simulate({ 24.0, 14.0, 14.0 });
   DeviceSelectionParams selection;
   /// Where the main body's proximal edge is deployed: this far below the proximal site (the lower
-  /// edge of the lowest renal ostium) along the aorta, mm (negative: above it), in [−30, 60].
+  /// edge of the lowest renal ostium) and its margin (SiteMarginMm, FitCheck.h: the edge's
+  /// uncertainty less the overlap an ostium's edge tolerates) along the aorta, mm (negative: above
+  /// it), in [−30, 60].
   double deploymentOffsetMm = 0.0;
   /// The device catalogue (read and validated at the edge); needed when the plan reaches Device.
   DeviceCatalog catalog;
@@ -189,9 +191,12 @@ struct RepairPlan
   bool Reached(PlanStage stage) const { return static_cast<int>(reached) >= static_cast<int>(stage); }
   bool HasGraft() const { return simulatedFamily >= 0; }
   /// Where the main body's proximal edge is deployed: along the aorta from its top, mm (the
-  /// proximal site + PlanParams::deploymentOffsetMm), when the plan reaches the device; NaN when
-  /// the site is not known (ProximalSite::Known).
+  /// proximal site + deploymentMarginMm + PlanParams::deploymentOffsetMm), when the plan reaches
+  /// the device; NaN when the site is not known (ProximalSite::Known).
   double deploymentTargetAbscissaMm = 0.0;
+  /// Below the lowest renal's lower edge as read, so that the fabric covers none of the ostium
+  /// wherever the edge lies within its uncertainty (SiteMarginMm), mm; 0 for a person's point.
+  double deploymentMarginMm = 0.0;
   /// The family whose components the plan orders (FamilyForMainBody: the recommended one, else the
   /// nearest with a main body); −1 when no family has a main body.
   int orderedFamily = -1;

@@ -18,10 +18,25 @@
 /// centroid). What it would take for one: a circumferential calcified ring of 1,500 HU and more
 /// all around the aorta over a centimetre (not seen on the real scans in ../shared/data).
 ///
+/// **Around the seed** (FindEndograftAroundSeed). A seed in the graft's main body whose lumen the
+/// growing cannot follow — struts and their blooming above `calciumHu` stop it, metal streaks
+/// break the window: a real post-EVAR scan grew 3 mm of lumen — leaves too little lumen for the
+/// check above, and the plan would fail later for a wrong reason. The second check needs only the
+/// CT and the seed: metal voxels within `seedSearchRadiusMm` of the seed in (x, y), binned by
+/// height as above, are walked from the seed's bin upward and downward; a bin holds a ring when,
+/// seen from the walk's current centre (first the seed, which lies inside the graft), metal lies
+/// in at least `minimumRingSectors` of the 8 sectors and the nearest metal of each of 32 finer
+/// sectors (the ring itself: whatever lies beyond it, a vertebra, is farther) lies at a mean of
+/// at least `minimumRingRadiusMm` from its own centroid, which becomes the centre for the next bin
+/// (the graft bends with the aorta). A walk ends after `maximumRingGapMm` of bins without a ring
+/// (the fabric between two stents). Bone beside the aorta fills two or three sectors seen from a
+/// seed inside it; a calcified arc does not reach metalHu.
+///
 /// Input: the CT (HU), the lumen mask on its grid and a box (image index) holding all of the
 /// lumen's voxels. Output: the evidence (rings, their height, where). Units mm, HU; positions LPS.
 /// Errors: InputError for parameters out of range. Complexity: one pass over the box's HU, then
-/// the metal voxels only (each against a ball of `nearLumenMm` in the mask).
+/// the metal voxels only (each against a ball of `nearLumenMm` in the mask); around the seed, one
+/// pass over a box of 2 seedSearchRadiusMm × 2 seedSearchRadiusMm × 2 seedSearchHeightMm.
 #pragma once
 
 #include "Common/IndexBox.h"
@@ -37,6 +52,10 @@ struct EndograftParams
   int minimumRingSectors = 7;        ///< of 8 sectors around the bin's metal; in [4, 8]
   double minimumRingRadiusMm = 7.0;  ///< a ring around an aortic lumen (a 14 mm device at least), mm; in [2, 30]
   double minimumRingLengthMm = 10.0; ///< height of rings for an endograft, mm; in [1, 200]
+  /// Around the seed: a main body up to 36 mm across, the seed anywhere inside it, mm; in [10, 80].
+  double seedSearchRadiusMm = 40.0;
+  double seedSearchHeightMm = 200.0; ///< above and below the seed, mm; in [10, 500]
+  double maximumRingGapMm = 10.0;    ///< the fabric between two stents of a graft, mm; in [0, 30]
 };
 
 struct EndograftEvidence
@@ -47,6 +66,7 @@ struct EndograftEvidence
   double maximumHu = 0.0;                ///< brightest metal voxel beside the lumen, HU
   double ringFromZ = 0.0, ringToZ = 0.0; ///< LPS z of the lowest and highest ring bins, mm
   bool found = false;                    ///< ringLengthMm ≥ minimumRingLengthMm
+  bool aroundSeed = false;               ///< from FindEndograftAroundSeed: rings around the seed
 };
 
 /// See the file comment. `box` must lie inside the image (LumenSegmentation::box).
@@ -54,5 +74,9 @@ EndograftEvidence FindEndograft(const CtImage& ct,
                                 const LabelImage& lumen,
                                 const IndexBox& box,
                                 const EndograftParams& params = {});
+
+/// See the file comment ("Around the seed"). `seedLps` anywhere (outside the image: nothing found).
+/// metalVoxels counts the metal within seedSearchRadiusMm of the seed's (x, y), every bin.
+EndograftEvidence FindEndograftAroundSeed(const CtImage& ct, const Point3& seedLps, const EndograftParams& params = {});
 
 } // namespace sgp

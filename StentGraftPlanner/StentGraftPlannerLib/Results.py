@@ -649,7 +649,14 @@ def fitCheckLines(fitCheck, family=None):
             lines.append(("fail", "migration risk: the proximal seal is shorter than %s" % _mm(proximalMinimum)))
     if "coveredOstia" in fitCheck:
         covered = _list(fitCheck["coveredOstia"])
-        if not covered:
+        # Issue 46 item 1: an ostium not covered as read, but within its edge's uncertainty of the graft.
+        mayBe = [o for o in _list(fitCheck.get("ostia")) if isinstance(o, dict) and o.get("mayBeCovered") is True]
+        if not covered and mayBe:
+            lines.append(("indeterminate", "no ostium covered as read; "
+                          + "; ".join("the %s ostium may be covered (its edge is read within %s)"
+                                      % (_words(o.get("branch", "?")), _mm(_toFloat(o.get("edgeUncertaintyMm"))))
+                                      for o in mayBe)))
+        elif not covered:
             lines.append(("ok", "no ostium covered"))
         for ostium in covered:
             text = (ostium.get("text") or _words(ostium.get("name", "?"))) if isinstance(ostium, dict) else (

@@ -587,6 +587,17 @@ class FitCheckTest(unittest.TestCase):
         fitCheck["proximalSealLengthMm"] = 15.5
         self.assertEqual(Results.fitCheckLines(fitCheck)[0][0], "ok")
 
+    def test_OstiumWithinItsEdgesUncertainty_Indeterminate(self):
+        # Issue 46 item 1: the graft at the renal's lower edge as read, which may lie 1.25 mm lower.
+        fitCheck = {"coveredOstia": [], "ostia": [
+            {"branch": "rightRenal", "covered": False, "mayBeCovered": True, "edgeUncertaintyMm": 1.25},
+            {"branch": "leftRenal", "covered": False, "mayBeCovered": False, "edgeUncertaintyMm": 1.25}]}
+        self.assertEqual(Results.fitCheckLines(fitCheck), [
+            ("indeterminate", "no ostium covered as read; the right renal ostium may be covered (its edge is read "
+                              "within 1.2 mm)")])
+        fitCheck["ostia"][0]["mayBeCovered"] = False
+        self.assertEqual(Results.fitCheckLines(fitCheck), [("ok", "no ostium covered")])
+
     def test_EstimatedSeals_PartialPlanAndRisks(self):
         fitCheck = {"proximalSealLengthMm": 9.25, "sealEstimatedOnLumen": {"proximal": True, "right": False},
                     "limbsChecked": {"right": True, "left": False}, "rightIliacSealLengthMm": 20.0,
