@@ -75,6 +75,19 @@ void DrawStentGraft(CtImage& ct, const PhantomTruth& truth, double topZ, double 
     }
 }
 
+/// A 10 mm stent over 30 mm of the right common iliac, 5 mm below the bifurcation, struts of 3,000 HU.
+void DrawIliacStent(AorticPhantom& phantom)
+{
+  const double bifurcationZ = LandmarkZ(phantom.truth, "aorticBifurcation");
+  for (const PhantomVessel& v : phantom.truth.vessels)
+    if (v.name == "rightIliac")
+    {
+      PhantomTruth iliac;
+      iliac.vessels.push_back(v);
+      DrawStentGraft(*phantom.ct, iliac, bifurcationZ - 5.0, bifurcationZ - 35.0, 4.0, 3000.0);
+    }
+}
+
 /// The default anatomy (0.8 × 0.8 × 1.0 mm, noise 20 HU, renal arteries, a vertebra).
 AorticPhantom Default(double spacingZ = 1.0)
 {
@@ -260,15 +273,7 @@ TEST(Endograft, CalciumBoneAndAnIliacStent_AreNotOne)
     AorticPhantom phantom = GenerateAorticPhantom(p);
     if (&p == &calcified)
     {
-      // A 10 mm stent over 30 mm of the right common iliac, struts of 3,000 HU.
-      const double bifurcationZ = LandmarkZ(phantom.truth, "aorticBifurcation");
-      for (const PhantomVessel& v : phantom.truth.vessels)
-        if (v.name == "rightIliac")
-        {
-          PhantomTruth iliac;
-          iliac.vessels.push_back(v);
-          DrawStentGraft(*phantom.ct, iliac, bifurcationZ - 5.0, bifurcationZ - 35.0, 4.0, 3000.0);
-        }
+      DrawIliacStent(phantom);
     }
     const LumenSegmentation lumen =
       GrowLumenRegion(*phantom.ct, phantom.truth.seedLps, testing::ShippedPlanParams().growing);
@@ -310,13 +315,7 @@ TEST(Endograft, DenseBoneAndAnIliacStentAroundTheSeed_AreNotOne)
   ASSERT_GT(dense, 1000); // the cortex was there to raise
   const double siteZ = LandmarkZ(phantom.truth, "rightRenalOstium");
   const double bifurcationZ = LandmarkZ(phantom.truth, "aorticBifurcation");
-  for (const PhantomVessel& v : phantom.truth.vessels)
-    if (v.name == "rightIliac")
-    {
-      PhantomTruth iliac;
-      iliac.vessels.push_back(v);
-      DrawStentGraft(*phantom.ct, iliac, bifurcationZ - 5.0, bifurcationZ - 35.0, 4.0, 3000.0);
-    }
+  DrawIliacStent(phantom);
   int seeds = 0;
   for (double z = siteZ; z > bifurcationZ + 5.0; z -= 10.0)
     for (const double fromWall : { -1.0, 2.0 }) // −1: the axis
