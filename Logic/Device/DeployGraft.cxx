@@ -58,17 +58,20 @@ int Nearest(const GraftLayout& g, int side, double pathMm)
   return best;
 }
 
-/// The diameter of component `c` at `pathMm` on `side` (see the file comment).
+/// The diameter of component `c` at `pathMm` on `side` (see the file comment); the main body's flow
+/// divider at path position `flowDividerMm` (NaN: the catalogue's, from its top).
 double DiameterAt(const ConfiguredComponent& c,
                   const std::vector<ConfiguredComponent>& all,
                   int side,
                   int ipsilateral,
-                  double pathMm)
+                  double pathMm,
+                  double flowDividerMm)
 {
   const CatalogueComponent& item = c.item;
   if (c.role != OrderRole::MainBody)
     return std::isfinite(item.distalDiameterMm) ? item.distalDiameterMm : item.diameterMm;
-  if (!std::isfinite(item.flowDividerMm) || pathMm < item.flowDividerMm)
+  const double divider = std::isfinite(flowDividerMm) ? flowDividerMm : item.flowDividerMm;
+  if (!std::isfinite(divider) || pathMm < divider)
     return item.diameterMm;
   if (side == ipsilateral)
     return item.distalDiameterMm;
@@ -111,7 +114,8 @@ void TagVertices(GraftLayout& g, int ipsilateral, double gateEndMm)
     g.pathMm[i] = path;
     g.component[i] = outer;
     g.innerComponent[i] = covering.size() > 1 ? covering[1] : -1;
-    const double d = DiameterAt(g.components[std::size_t(outer)], g.components, side, ipsilateral, path);
+    const double d =
+      DiameterAt(g.components[std::size_t(outer)], g.components, side, ipsilateral, path, g.flowDividerMm);
     const bool twoLegs = seg == TrunkSegment && std::isfinite(g.flowDividerMm) && path >= g.flowDividerMm;
     // Below the flow divider the trunk stands for two legs side by side (the file comment).
     const double theta = 2.0 * pi * j / perRing;
@@ -135,7 +139,8 @@ GraftLayout LayOutGraft(const CenterlineTree& tree,
                         const Measurements& m,
                         const DeviceConfiguration& c,
                         double targetAbscissaMm,
-                        StentMeshParams meshParams)
+                        StentMeshParams meshParams,
+                        const DeviceConfiguration* ordered)
 {
   if (!c.configured)
     throw InputError("The graft cannot be laid out from a configuration that was not made (" + c.unknownReason + ").");
@@ -148,6 +153,10 @@ GraftLayout LayOutGraft(const CenterlineTree& tree,
   g.flowDividerMm = c.flowDividerMm;
   g.gateEndMm = c.gateEndMm;
   g.ipsilateralSide = c.ipsilateralSide;
+  const DeviceConfiguration& fabric = ordered ? *ordered : c;
+  for (const ConfiguredComponent& part : fabric.components)
+    g.fabricMm.push_back({ part.proximalMm, part.distalMm });
+  g.fabricGateEndMm = fabric.gateEndMm;
   meshParams.proximalAbscissaMm = targetAbscissaMm;
   for (int side = 0; side < 2; ++side)
     meshParams.legEndAbscissaMm[std::size_t(side)] = g.IliacOfPath(side, c.coveredLengthMm[std::size_t(side)]);
@@ -235,6 +244,96 @@ GraftLayout LayOutOnMeasureMesh(const StentMesh& mesh,
   }
   TagVertices(g, 0, NaN);
   return g;
+}
+
+double GraftAxis::PathAt(double fabricMm) const
+{
+  if (lengthMm.empty())
+    return fabricMm;
+  if (fabricMm <= lengthMm.front())
+    return pathMm.front() + (fabricMm - lengthMm.front());
+  for (std::size_t i = 1; i < lengthMm.size(); ++i)
+    if (fabricMm <= lengthMm[i])
+    {
+      const double span = lengthMm[i] - lengthMm[i - 1];
+      const double t = span > 0.0 ? (fabricMm - lengthMm[i - 1]) / span : 1.0;
+      return pathMm[i - 1] + t * (pathMm[i] - pathMm[i - 1]);
+    }
+  return pathMm.back() + (fabricMm - lengthMm.back());
+}
+
+GraftAxis GraftAxisOf(const GraftLayout& g, const Points& V, int side)
+{
+  GraftAxis axis;
+  Point3 previous = Point3::Zero();
+  const auto add = [&](int segment, int k, double path)
+  {
+    const Point3 centre = RingCentroid(g.mesh, V, segment, k);
+    axis.lengthMm.push_back(axis.lengthMm.empty() ? 0.0 : axis.lengthMm.back() + (centre - previous).norm());
+    axis.pathMm.push_back(path);
+    previous = centre;
+  };
+  const std::vector<double>& trunk = g.mesh.ringAbscissaMm[TrunkSegment];
+  for (int k = 0; k < g.mesh.RingsIn(TrunkSegment); ++k)
+    add(TrunkSegment, k, trunk[std::size_t(k)] - g.targetAbscissaMm);
+  const std::vector<double>& leg = g.mesh.ringAbscissaMm[std::size_t(1 + side)];
+  for (int k = 0; k < g.mesh.RingsIn(1 + side); ++k)
+    add(1 + side, k, g.PathOfIliac(side, leg[std::size_t(k)]));
+  return axis;
+}
+
+DeviceConfiguration PlacedAlongTheGraft(const DeviceConfiguration& c, const std::array<GraftAxis, 2>& axes)
+{
+  DeviceConfiguration placed = c;
+  const int ipsilateral = c.ipsilateralSide;
+  const auto place = [&](int side, double fabricMm)
+  { return std::isfinite(fabricMm) ? axes[std::size_t(side)].PathAt(fabricMm) : fabricMm; };
+  for (ConfiguredComponent& part : placed.components)
+  {
+    const int side = part.role == OrderRole::MainBody ? ipsilateral : part.side;
+    part.proximalMm = place(side, part.proximalMm);
+    part.distalMm = place(side, part.distalMm);
+  }
+  placed.flowDividerMm = place(ipsilateral, c.flowDividerMm);
+  placed.gateEndMm = place(1 - ipsilateral, c.gateEndMm);
+  for (int side = 0; side < 2; ++side)
+    placed.coveredLengthMm[std::size_t(side)] = place(side, c.coveredLengthMm[std::size_t(side)]);
+  return placed;
+}
+
+FabricDeployment DeployTheFabric(const CenterlineTree& tree,
+                                 const Measurements& measurements,
+                                 const DeviceConfiguration& configuration,
+                                 double targetAbscissaMm,
+                                 const StentMeshParams& meshParams,
+                                 const std::function<DeployedGraft(GraftLayout)>& fit)
+{
+  FabricDeployment out;
+  DeviceConfiguration placed = configuration;
+  for (int pass = 1;; ++pass)
+  {
+    out.graft = fit(LayOutGraft(tree, measurements, placed, targetAbscissaMm, meshParams, &configuration));
+    double worst = 0.0;
+    for (int side = 0; side < 2; ++side)
+    {
+      const std::size_t s = std::size_t(side);
+      out.axes[s] = GraftAxisOf(out.graft.layout, out.graft.fit.V, side);
+      worst = std::max(worst, std::abs(configuration.coveredLengthMm[s] - out.axes[s].LengthMm()));
+    }
+    if (worst <= FabricLengthToleranceMm || pass == FabricLengthPasses)
+      return out;
+    DeviceConfiguration next = PlacedAlongTheGraft(configuration, out.axes);
+    for (int side = 0; side < 2; ++side)
+    {
+      const Centerline& iliac = side == 0 ? tree.rightIliac : tree.leftIliac;
+      if (out.graft.layout.IliacOfPath(side, next.coveredLengthMm[std::size_t(side)]) > iliac.LengthMm())
+      {
+        out.carried = false;
+        return out;
+      }
+    }
+    placed = std::move(next);
+  }
 }
 
 DeployedGraft DeployGraft(GraftLayout layout,

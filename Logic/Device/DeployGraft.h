@@ -25,6 +25,16 @@
 ///    left axis — d_side across (both legs side by side span d_right + d_left) and about half that
 ///    front to back.
 ///
+/// **Fabric does not shorten** (issue 46 item 5). The rings are laid at the centerline's path
+/// positions, and the fitted rings stay in their planes but their centres move: through an
+/// off-centre lumen in a sac or round an angled neck the fitted graft runs straighter than the
+/// centerline, so its own axis (GraftAxis: the fitted rings' centres) is shorter than the path it
+/// was laid on. The pipeline (PlanRepair) therefore lays the configuration out again with every
+/// path position moved to where its fabric, measured along the last fit's axis, reaches
+/// (PlacedAlongTheGraft), until each side's axis is within FabricLengthToleranceMm of the fabric
+/// ordered: the layout's components then hold where the simulated graft put them, the
+/// configuration where the centerline length would have.
+///
 /// **Not configured** (the catalogue lacks a length, a landmark is missing, a partial plan): the
 /// graft is laid on the measure-mode mesh's own extents (StentMesh.h: trunk from the proximal site,
 /// legs to 5 mm above the internal iliac origins) with the chosen diameters — main body on the
@@ -37,6 +47,9 @@
 /// distal edge lies beyond the iliac in view or a vessel is too short for two rings.
 #pragma once
 
+#include <array>
+#include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -65,18 +78,27 @@ struct GraftLayout
   double flowDividerMm = std::numeric_limits<double>::quiet_NaN(); ///< f on the path (NaN: not known)
   double gateEndMm = std::numeric_limits<double>::quiet_NaN();     ///< g on the contralateral path (NaN: not known)
   int ipsilateralSide = 0;                                         ///< the main body's side
+  /// Each component's ends as ordered (its fabric, mm from the proximal edge along its side: the
+  /// configuration's positions before PlacedAlongTheGraft) — `components` hold where the simulated
+  /// graft put them on the centerline — and the gate's end so; what the overlaps are measured on.
+  std::vector<std::array<double, 2>> fabricMm;
+  double fabricGateEndMm = std::numeric_limits<double>::quiet_NaN();
   bool configured = false;
   /// The path position of a point `s` mm along the iliac of `side`, and back.
   double PathOfIliac(int side, double iliacAbscissaMm) const;
   double IliacOfPath(int side, double pathMm) const;
 };
 
-/// The configured graft's layout (see the file comment). \throws InputError from BuildStentMesh.
+/// The configured graft's layout (see the file comment), at `configuration`'s path positions;
+/// `ordered`, the configuration as ordered when `configuration` is it placed along a graft's axis
+/// (PlacedAlongTheGraft; nullptr: `configuration` itself), gives the fabric positions.
+/// \throws InputError from BuildStentMesh.
 GraftLayout LayOutGraft(const CenterlineTree& tree,
                         const Measurements& measurements,
                         const DeviceConfiguration& configuration,
                         double targetAbscissaMm,
-                        StentMeshParams meshParams);
+                        StentMeshParams meshParams,
+                        const DeviceConfiguration* ordered = nullptr);
 
 /// An unconfigured graft on the measure-mode mesh: the main body (`diametersMm[0]`) on the trunk
 /// and each limb (`diametersMm[1 + side]`; NaN: not sized, R the lumen's median ring diameter
@@ -93,6 +115,58 @@ struct DeployedGraft
   GraftLayout layout;
   ActiveContourResult fit;
 };
+
+/// The simulated graft's own axis on one side (issue 46 item 5): the centres of its fitted rings
+/// (RingCentroid) — the trunk's from its first, then that side's leg's — joined by straight
+/// segments. Per ring: its length along that axis from the first ring, and its path position (the
+/// layout's: mm from the deployment target along the side's centerline path), both mm.
+struct GraftAxis
+{
+  std::vector<double> lengthMm;
+  std::vector<double> pathMm;
+  double LengthMm() const { return lengthMm.empty() ? 0.0 : lengthMm.back(); }
+  /// The path position where the axis has run `fabricMm` from its first ring: linear between rings;
+  /// beyond its ends mm for mm along the path (a leg in its iliac follows the centerline).
+  double PathAt(double fabricMm) const;
+};
+
+/// How close each side's graft axis must come to its fabric's length, mm, and in how many layouts
+/// at most (DeployTheFabric: the first at the centerline's lengths, then along the last fit's axes).
+constexpr double FabricLengthToleranceMm = 0.5;
+constexpr int FabricLengthPasses = 4;
+
+/// The axis of `side` (0 right, 1 left) of the surface V (#V×3, LPS mm) on `layout`'s mesh.
+GraftAxis GraftAxisOf(const GraftLayout& layout, const Points& V, int side);
+
+/// `configuration` with its path positions — every component's ends, the flow divider, the gate's
+/// end, each side's covered length — moved to where its fabric reaches along each side's graft
+/// axis `axes` (GraftAxis::PathAt of the position, read as fabric from the proximal edge): fabric
+/// does not shorten, so a graft that runs straighter than the centerline through a sac reaches
+/// further down its iliacs than the centerline length says. Lengths and overlaps stay the
+/// catalogue's. The main body and the flow divider follow the ipsilateral axis, the gate's end the
+/// contralateral one (the trunk's rings are on both).
+DeviceConfiguration PlacedAlongTheGraft(const DeviceConfiguration& configuration, const std::array<GraftAxis, 2>& axes);
+
+struct FabricDeployment
+{
+  DeployedGraft graft;
+  std::array<GraftAxis, 2> axes; ///< its right and left axes
+  /// False when the fabric would carry a distal edge past the iliac in view: the graft stays where
+  /// the last layout put it, shorter than its fabric.
+  bool carried = true;
+};
+
+/// The configuration deployed at `targetAbscissaMm` with fabric that does not shorten (the file
+/// comment): laid out (LayOutGraft) and fitted by `fit` (DeployGraft with the caller's wall field)
+/// at the centerline's positions, then at PlacedAlongTheGraft of the last fit's axes, until each
+/// side's axis is within FabricLengthToleranceMm of its fabric (at most FabricLengthPasses
+/// layouts). \throws InputError from LayOutGraft.
+FabricDeployment DeployTheFabric(const CenterlineTree& tree,
+                                 const Measurements& measurements,
+                                 const DeviceConfiguration& configuration,
+                                 double targetAbscissaMm,
+                                 const StentMeshParams& meshParams,
+                                 const std::function<DeployedGraft(GraftLayout)>& fit);
 
 /// Expands `layout` in `wall` (a field over the layout's reach: StentReach) with `params` (weights,
 /// pressure, step; the balloon radii are the layout's nominal radii, per vertex).

@@ -54,7 +54,8 @@
 ///    aneurysm's wall);
 ///  - type Ib risk: an iliac seal shorter than the family's minimum iliac seal;
 ///  - type III risk: an overlap (limb in the gate or leg, extension in a limb) below the family's
-///    minimum — measured on the deployed positions;
+///    minimum — measured on the deployed fabric (GraftLayout::fabricMm: the positions along the
+///    graft it was deployed at);
 ///  - infolding risk: oversizing over `infoldingPercent` (30 %) at the proximal edge or a landing
 ///    zone; oversizing outside [oversizingMinPercent, oversizingMaxPercent] there;
 ///  - an ostium the deployed graft covers: renal, superior mesenteric and coeliac on the aorta by

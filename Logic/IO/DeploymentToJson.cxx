@@ -41,9 +41,14 @@ nlohmann::json DeploymentToJson(const RepairPlan& plan)
     return nullptr;
   const FamilyEvaluation& family = plan.selection.families[std::size_t(plan.orderedFamily)];
   const double target = plan.deploymentTargetAbscissaMm;
+  // The simulated graft is the ordered configuration's when it was laid out from it (same
+  // components, in the same order).
+  const bool simulated = plan.HasGraft() && plan.simulatedFamily == plan.orderedFamily &&
+                         plan.graft.layout.configured && plan.graft.layout.components.size() == c->components.size();
   Json components = Json::array();
-  for (const ConfiguredComponent& part : c->components)
+  for (std::size_t index = 0; index < c->components.size(); ++index)
   {
+    const ConfiguredComponent& part = c->components[index];
     Json json = { { "role", ToString(part.role) },
                   { "name", part.item.name },
                   { "catalogueCode", part.item.code.empty() ? Json(nullptr) : Json(part.item.code) },
@@ -52,6 +57,13 @@ nlohmann::json DeploymentToJson(const RepairPlan& plan)
                   { "lengthMm", NumberOrNull(part.item.lengthMm) },
                   { "evidence", part.item.evidence } };
     json.update(Placement(plan, target, part));
+    if (simulated)
+    {
+      const ConfiguredComponent& placed = plan.graft.layout.components[index];
+      json["simulatedFromTargetMm"] = { placed.proximalMm, placed.distalMm };
+    }
+    else
+      json["simulatedFromTargetMm"] = nullptr;
     components.push_back(json);
   }
   Json overlaps = Json::array();
@@ -78,6 +90,19 @@ nlohmann::json DeploymentToJson(const RepairPlan& plan)
                               { "sealMm", c->configured ? Json(c->sealLengthMm[std::size_t(side)]) : Json(nullptr) },
                               { "marginToInternalIliacMm",
                                 c->configured ? Json(c->marginToInternalIliacMm[std::size_t(side)]) : Json(nullptr) } };
+  Json simulatedLength = nullptr;
+  if (simulated)
+  {
+    simulatedLength = Json::object();
+    for (int side = 0; side < 2; ++side)
+    {
+      const std::size_t s = std::size_t(side);
+      simulatedLength[SideName(side)] = { { "fabricMm", NumberOrNull(plan.graftFabricLengthMm[s]) },
+                                          { "graftAxisMm", NumberOrNull(plan.graftAxisLengthMm[s]) },
+                                          { "centerlineMm", NumberOrNull(plan.graftPathLengthMm[s]) },
+                                          { "distalEdgeShiftMm", NumberOrNull(plan.distalEdgeShiftMm[s]) } };
+    }
+  }
   const double toBifurcation = plan.measurements.bifurcationAbscissaMm - target;
   return {
     { "family", c->family },
@@ -95,6 +120,7 @@ nlohmann::json DeploymentToJson(const RepairPlan& plan)
     { "gateEndMm", c->configured ? Json(c->gateEndMm) : Json(nullptr) },
     { "gateClearanceMm", c->configured ? Json(c->gateClearanceMm) : Json(nullptr) },
     { "flowDividerMm", c->configured ? Json(c->flowDividerMm) : Json(nullptr) },
+    { "simulatedLength", simulatedLength },
     { "anatomy",
       { { "deploymentTargetAbscissaMm", target },
         { "deploymentMarginMm", plan.deploymentMarginMm },

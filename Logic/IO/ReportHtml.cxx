@@ -584,6 +584,9 @@ void FitCheckSection(const RepairPlan& plan,
   row("main body diameter", "mainBodyDiameter", plan.graftDiametersMm[0], "mm", "");
   row("right limb diameter where it lands", "rightLimbDiameter", plan.graftDiametersMm[1], "mm", "");
   row("left limb diameter where it lands", "leftLimbDiameter", plan.graftDiametersMm[2], "mm", "");
+  for (int side = 0; side < 2 && layout.configured && std::isfinite(plan.graftAxisLengthMm[side]); ++side)
+    row(std::string(side == 0 ? "right" : "left") + " side: the graft's own axis, proximal to distal edge", "",
+        plan.graftAxisLengthMm[side], "mm", SimulatedLengthText(plan, side)); // issue 46 item 5
   const std::string proximalNeeds = "≥ " + FormatNumber(fit.minimumProximalSealMm, 0) + " mm";
   const std::string iliacNeeds = "≥ " + FormatNumber(fit.minimumIliacSealMm, 0) + " mm (the family's minimum)";
   row(std::string("proximal seal on healthy wall") + (fit.sealOnLumenOnly[0] ? lumenOnly : ""), "proximalSealLength",

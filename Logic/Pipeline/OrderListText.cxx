@@ -97,7 +97,11 @@ std::vector<std::string> OrderLines(const RepairPlan& plan)
                     " from the proximal edge; planned seal in the common iliac " + Mm(c->sealLengthMm[side]) +
                     ", distal edge " +
                     (margin >= 0.0 ? Mm(margin) + " above the internal iliac ostium"
-                                   : Mm(-margin) + " past the internal iliac ostium (covers it)"));
+                                   : Mm(-margin) + " past the internal iliac ostium (covers it)") +
+                    (std::isfinite(plan.distalEdgeShiftMm[side])
+                       ? "; simulated, the graft's own axis runs " + Mm(plan.graftAxisLengthMm[side]) + ": " +
+                           SimulatedLengthText(plan, side)
+                       : std::string()));
   }
   for (const ConfigurationFinding& f : c->findings)
     lines.push_back("  FINDING: " + f.text + ". Option: " + f.option + ".");
@@ -106,6 +110,20 @@ std::vector<std::string> OrderLines(const RepairPlan& plan)
   for (const SizeAlternative& a : c->alternatives)
     lines.push_back("  Alternative: " + a.text + ".");
   return lines;
+}
+
+std::string SimulatedLengthText(const RepairPlan& plan, int side)
+{
+  const std::size_t s = std::size_t(side);
+  const double shift = plan.distalEdgeShiftMm[s];
+  if (!std::isfinite(shift))
+    return "";
+  const std::string fabric = "the fabric ordered, " + Mm(plan.graftFabricLengthMm[s]) + ", over " +
+                             Mm(plan.graftPathLengthMm[s]) + " of centerline";
+  if (std::abs(shift) < 0.05) // equal at 0.1 mm
+    return fabric + ": its distal edge where the covered length puts it";
+  return fabric + ": its distal edge " + Mm(std::abs(shift)) + (shift > 0.0 ? " further down" : " higher") +
+         " than the covered length read along the centerline";
 }
 
 std::string OverlapNeedsText(const ComponentOverlap& overlap)

@@ -25,6 +25,12 @@ std::string AnatomyLengthsText(const RepairPlan& plan);
 
 std::vector<std::string> OrderLines(const RepairPlan& plan);
 
+/// Where the simulated graft's distal edge on `side` (0 right, 1 left) lies against the covered
+/// length read along the centerline (issue 46 item 5): "the fabric ordered, 178.0 mm, over 180.1 mm
+/// of centerline: its distal edge 2.1 mm further down than the covered length read along the
+/// centerline"; "" when the ordered graft was not simulated.
+std::string SimulatedLengthText(const RepairPlan& plan, int side);
+
 /// The window a junction's overlap must lie in: "10.0–20.0 mm", "≥ 10.0 mm" when the catalogue
 /// gives no maximum, one value when the gate's stub allows only the minimum.
 std::string OverlapNeedsText(const ComponentOverlap& overlap);

@@ -404,21 +404,43 @@ void SimulateTheConfiguration(const WallDistanceField& measureWall,
   plan.simulatedFamily = plan.orderedFamily;
   const FamilyEvaluation& family = plan.selection.families[std::size_t(plan.orderedFamily)];
   const DeviceConfiguration& configuration = family.configuration;
-  GraftLayout layout =
-    LayOutGraft(plan.centerlines, plan.measurements, configuration, plan.deploymentTargetAbscissaMm, params.mesh);
-  plan.graftDiametersMm = { layout.components.front().item.diameterMm, std::numeric_limits<double>::quiet_NaN(),
+  plan.graftDiametersMm = { configuration.components.front().item.diameterMm, std::numeric_limits<double>::quiet_NaN(),
                             std::numeric_limits<double>::quiet_NaN() };
-  for (const ConfiguredComponent& part : layout.components)
+  for (const ConfiguredComponent& part : configuration.components)
     if (part.role != OrderRole::MainBody &&
         part.distalMm >= configuration.coveredLengthMm[std::size_t(part.side)] - 1e-9)
       plan.graftDiametersMm[std::size_t(1 + part.side)] = part.item.distalDiameterMm;
   const int ipsi = configuration.ipsilateralSide;
   if (std::isnan(plan.graftDiametersMm[std::size_t(1 + ipsi)])) // the main body's own leg lands
-    plan.graftDiametersMm[std::size_t(1 + ipsi)] = layout.components.front().item.distalDiameterMm;
-  std::optional<WallDistanceField> ownWall;
-  const WallDistanceField& wall = WallDistanceField::SharedOrOwn(measureWall, *plan.lumen.mask, SharedWallBandMm,
-                                                                 StentReach(layout.mesh, plan.centerlines), ownWall);
-  plan.graft = DeployGraft(std::move(layout), wall, params.graft, report.Callback());
+    plan.graftDiametersMm[std::size_t(1 + ipsi)] = configuration.components.front().item.distalDiameterMm;
+  // Fabric does not shorten (issue 46 item 5; DeployGraft.h): laid out again along the fit's axes.
+  FabricDeployment deployed =
+    DeployTheFabric(plan.centerlines, plan.measurements, configuration, plan.deploymentTargetAbscissaMm, params.mesh,
+                    [&](GraftLayout layout)
+                    {
+                      std::optional<WallDistanceField> ownWall;
+                      const WallDistanceField& wall =
+                        WallDistanceField::SharedOrOwn(measureWall, *plan.lumen.mask, SharedWallBandMm,
+                                                       StentReach(layout.mesh, plan.centerlines), ownWall);
+                      return DeployGraft(std::move(layout), wall, params.graft, report.Callback());
+                    });
+  plan.graft = std::move(deployed.graft);
+  const std::array<GraftAxis, 2>& axes = deployed.axes;
+  for (int side = 0; side < 2; ++side)
+  {
+    const std::size_t s = std::size_t(side);
+    plan.graftFabricLengthMm[s] = configuration.coveredLengthMm[s];
+    plan.graftAxisLengthMm[s] = axes[s].LengthMm();
+    plan.graftPathLengthMm[s] = axes[s].pathMm.back();
+    plan.distalEdgeShiftMm[s] = plan.graftPathLengthMm[s] - configuration.coveredLengthMm[s];
+    if (std::abs(plan.graftAxisLengthMm[s] - plan.graftFabricLengthMm[s]) > FabricLengthToleranceMm)
+      report.Warn(std::string("The simulated graft's ") + (side == 0 ? "right" : "left") + " axis is " +
+                  FormatNumber(plan.graftAxisLengthMm[s]) + " mm long against the " +
+                  FormatNumber(plan.graftFabricLengthMm[s]) + " mm of fabric ordered" +
+                  (deployed.carried
+                     ? " (it did not settle within " + std::to_string(FabricLengthPasses) + " layouts)."
+                     : std::string(": its distal edge could not be carried further (the iliac in view ends).")));
+  }
   if (!plan.graft.fit.converged)
     report.Warn("The simulated graft did not converge within " + std::to_string(plan.graft.fit.iterations) +
                 " iterations; the surface written is the last one.");

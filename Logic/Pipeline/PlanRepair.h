@@ -38,6 +38,7 @@
 
 #include <array>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -178,6 +179,20 @@ struct RepairPlan
   /// Main body (proximal), right and left landing diameters of the simulated graft, mm.
   std::array<double, 3> graftDiametersMm{ 0.0, 0.0, 0.0 };
   DeployedGraft graft; ///< the simulated graft: its layout (components per vertex) and fitted surface
+  /// A configured graft's length per side (right, left), mm (issue 46 item 5; NaN otherwise): the
+  /// fabric ordered (DeviceConfiguration::coveredLengthMm: the components less their overlaps), the
+  /// simulated graft's own axis from its proximal to its distal edge (GraftAxis: within
+  /// FabricLengthToleranceMm of the fabric), the centerline path it covers, and how much further
+  /// down that path its distal edge lies than the fabric's length read along the centerline
+  /// (positive where the graft runs straighter than the centerline, through a sac).
+  std::array<double, 2> graftFabricLengthMm{ std::numeric_limits<double>::quiet_NaN(),
+                                             std::numeric_limits<double>::quiet_NaN() };
+  std::array<double, 2> graftAxisLengthMm{ std::numeric_limits<double>::quiet_NaN(),
+                                           std::numeric_limits<double>::quiet_NaN() };
+  std::array<double, 2> graftPathLengthMm{ std::numeric_limits<double>::quiet_NaN(),
+                                           std::numeric_limits<double>::quiet_NaN() };
+  std::array<double, 2> distalEdgeShiftMm{ std::numeric_limits<double>::quiet_NaN(),
+                                           std::numeric_limits<double>::quiet_NaN() };
   FitCheck fitCheck;
   /// Why no graft was simulated (a sentence without a final full stop), when the plan reached the
   /// device stage without one; else empty.

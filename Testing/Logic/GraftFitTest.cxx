@@ -416,3 +416,74 @@ TEST_F(DefaultPhantomGraft, MismatchedMeasurements_InputError)
 
 } // namespace
 } // namespace sgp
+
+namespace sgp
+{
+namespace
+{
+
+// Issue 46 item 5: the fabric's positions on the centerline, from a graft's axis (analytic axes).
+TEST(FabricLength, PathAt_LinearBetweenRingsMmForMmBeyondTheEnds)
+{
+  GraftAxis axis;
+  axis.lengthMm = { 0.0, 10.0, 18.0 }; // the second stretch: 8 mm of graft over 10 mm of centerline
+  axis.pathMm = { 0.0, 10.0, 20.0 };
+  EXPECT_DOUBLE_EQ(axis.LengthMm(), 18.0);
+  EXPECT_DOUBLE_EQ(axis.PathAt(5.0), 5.0);
+  EXPECT_DOUBLE_EQ(axis.PathAt(14.0), 15.0);
+  EXPECT_DOUBLE_EQ(axis.PathAt(18.0), 20.0);
+  EXPECT_DOUBLE_EQ(axis.PathAt(25.0), 27.0);
+  EXPECT_DOUBLE_EQ(axis.PathAt(-2.0), -2.0);
+}
+
+TEST(FabricLength, PlacedAlongTheGraft_EveryPositionWhereItsFabricReaches)
+{
+  DeviceConfiguration c;
+  c.configured = true;
+  c.ipsilateralSide = 0;
+  const auto component = [](OrderRole role, int side, double from, double to)
+  {
+    ConfiguredComponent part;
+    part.role = role;
+    part.side = side;
+    part.proximalMm = from;
+    part.distalMm = to;
+    part.item.lengthMm = to - from;
+    return part;
+  };
+  c.components = { component(OrderRole::MainBody, 0, 0.0, 100.0), component(OrderRole::IpsilateralLimb, 0, 70.0, 170.0),
+                   component(OrderRole::ContralateralLimb, 1, 60.0, 180.0) };
+  c.flowDividerMm = 50.0;
+  c.gateEndMm = 85.0;
+  c.coveredLengthMm = { 170.0, 180.0 };
+  // Both axes: along the centerline to 40 mm, then 40 mm of graft over 50 mm of centerline (the
+  // sac, cut straight), then mm for mm.
+  GraftAxis axis;
+  axis.lengthMm = { 0.0, 40.0, 80.0, 200.0 };
+  axis.pathMm = { 0.0, 40.0, 90.0, 210.0 };
+  const DeviceConfiguration placed = PlacedAlongTheGraft(c, { axis, axis });
+  const auto expected = [](double fabric) {
+    return fabric <= 40.0 ? fabric : fabric <= 80.0 ? 40.0 + (fabric - 40.0) * 1.25 : 90.0 + (fabric - 80.0);
+  };
+  constexpr double exact = 1e-12; // sums and products of the figures above
+  for (std::size_t k = 0; k < c.components.size(); ++k)
+  {
+    EXPECT_NEAR(placed.components[k].proximalMm, expected(c.components[k].proximalMm), exact) << k;
+    EXPECT_NEAR(placed.components[k].distalMm, expected(c.components[k].distalMm), exact) << k;
+    EXPECT_DOUBLE_EQ(placed.components[k].item.lengthMm, c.components[k].item.lengthMm) << "the catalogue's";
+  }
+  EXPECT_NEAR(placed.flowDividerMm, 52.5, exact);
+  EXPECT_NEAR(placed.gateEndMm, 95.0, exact);
+  EXPECT_NEAR(placed.coveredLengthMm[0], 180.0, exact);
+  EXPECT_NEAR(placed.coveredLengthMm[1], 190.0, exact);
+  // An axis that follows the centerline moves nothing.
+  GraftAxis straight;
+  straight.lengthMm = straight.pathMm = { 0.0, 100.0, 200.0 };
+  const DeviceConfiguration same = PlacedAlongTheGraft(c, { straight, straight });
+  for (std::size_t k = 0; k < c.components.size(); ++k)
+    EXPECT_NEAR(same.components[k].distalMm, c.components[k].distalMm, exact) << k;
+  EXPECT_NEAR(same.coveredLengthMm[1], c.coveredLengthMm[1], exact);
+}
+
+} // namespace
+} // namespace sgp
