@@ -503,32 +503,25 @@ FitCheck CheckGraftFit(const DeployedGraft& graft,
                            Mm(*iliacSeal[side]) + ", needs ≥ " + FormatNumber(iliacMinimum, 0) + " mm — the " +
                            ComponentWords(atEnd(side)) + " seals over its distal " + Mm(*iliacSeal[side]));
   // Overlaps on the deployed fabric: each component in the one before it on its side's chain, along
-  // the graft (the fabric positions it was deployed at: DeployGraft.h; the centerline's where the
-  // layout has none).
-  const bool fabric = layout.fabricMm.size() == layout.components.size();
-  const auto fabricEnd = [&](std::size_t index, int end)
-  {
-    return fabric ? layout.fabricMm[index][std::size_t(end)]
-                  : (end ? layout.components[index].distalMm : layout.components[index].proximalMm);
-  };
-  if (layout.configured && std::isfinite(context.minimumOverlapMm))
+  // the graft (the fabric positions it was deployed at, which LayOutGraft keeps: DeployGraft.h).
+  const std::vector<std::array<double, 2>>& fabric = layout.fabricMm;
+  if (layout.configured && fabric.size() == layout.components.size() && std::isfinite(context.minimumOverlapMm))
     for (int side = 0; side < 2; ++side)
     {
       const ConfiguredComponent* outer = &body;
-      double outerEnd =
-        side == layout.ipsilateralSide ? fabricEnd(0, 1) : (fabric ? layout.fabricGateEndMm : layout.gateEndMm);
+      double outerEnd = side == layout.ipsilateralSide ? fabric.front()[1] : layout.fabricGateEndMm;
       for (std::size_t index = 0; index < layout.components.size(); ++index)
       {
         const ConfiguredComponent& part = layout.components[index];
         if (part.role == OrderRole::MainBody || part.side != side)
           continue;
-        const double overlap = outerEnd - fabricEnd(index, 0);
+        const double overlap = outerEnd - fabric[index][0];
         if (overlap < context.minimumOverlapMm - 1e-6)
           c.findings.push_back("type III endoleak risk: the " + ComponentWords(part) + " overlaps " + Mm(overlap) +
                                " in the " + ComponentWords(*outer) + ", needs ≥ " +
                                FormatNumber(context.minimumOverlapMm, 0) + " mm");
         outer = &part;
-        outerEnd = fabricEnd(index, 1);
+        outerEnd = fabric[index][1];
       }
     }
   for (const OstiumCoverage& o : c.ostia)

@@ -775,3 +775,45 @@ TEST(Deployment, SixteenMillimetreDistalAortaWithFourteenMillimetreLimbs_LimbCom
 
 } // namespace
 } // namespace sgp
+
+namespace sgp
+{
+namespace
+{
+
+// The overlap of a limb in the gate is read on the fabric the graft was deployed with
+// (GraftLayout::fabricMm), not on the centerline positions it was placed at: the contralateral
+// limb's top moved down its fabric to leave 2 mm less than the family's minimum overlap raises the
+// type III finding, its centerline positions untouched.
+TEST(Deployment, OverlapShortOnTheFabric_TypeIIIFinding)
+{
+  const AorticPhantom phantom = GenerateAorticPhantom(WallPhantom());
+  const RepairPlan plan = Plan(phantom, EndurantParams());
+  ASSERT_NE(plan.Configuration(), nullptr) << plan.selection.summary;
+  ASSERT_TRUE(plan.Configuration()->configured) << plan.Configuration()->unknownReason;
+  const auto typeIII = [](const FitCheck& fit)
+  {
+    return std::any_of(fit.findings.begin(), fit.findings.end(),
+                       [](const std::string& f) { return f.find("type III") != std::string::npos; });
+  };
+  EXPECT_FALSE(typeIII(plan.fitCheck));
+  const DeviceConfiguration& c = *plan.Configuration();
+  const DeviceFamily& family = *FindDeviceFamily(testing::ShippedPlanParams().catalog, c.family);
+  DeployedGraft graft = plan.graft;
+  std::size_t limb = 0;
+  while (limb < c.components.size() && c.components[limb].role != OrderRole::ContralateralLimb)
+    ++limb;
+  ASSERT_LT(limb, c.components.size());
+  const double shortOverlap = family.junctions.overlapMm.min - 2.0;
+  graft.layout.fabricMm[limb][0] = graft.layout.fabricGateEndMm - shortOverlap;
+  FitCheckContext context;
+  context.family = c.family;
+  context.minimumIliacSealMm = family.ifu.iliacSealLengthMm.min;
+  context.minimumOverlapMm = family.junctions.overlapMm.min;
+  const FitCheck fit = CheckGraftFit(graft, plan.measurements, plan.centerlines, &plan.vesselWall, context);
+  EXPECT_TRUE(typeIII(fit)) << (fit.findings.empty() ? "no finding" : fit.findings.front());
+  EXPECT_FALSE(fit.Passed());
+}
+
+} // namespace
+} // namespace sgp
