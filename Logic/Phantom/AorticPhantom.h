@@ -220,9 +220,11 @@ struct PhantomSizing
   double leftIliacLength = 0.0;
   double rightInternalIliacRadius = 0.0; ///< the internal iliac's lumen radius (its ostium's half width)
   double leftInternalIliacRadius = 0.0;
-  /// Aortic bifurcation to the internal iliac ostium's upstream edge on the common iliac's lumen
-  /// wall, along the common iliac's axis, mm (at most the iliac length: the origin itself where the
-  /// branch leaves so obliquely that its mouth opens where the common iliac divides).
+  /// Aortic bifurcation to the internal iliac ostium's upstream edge, along the common iliac's
+  /// (last) axis piece, mm: where the internal iliac's lumen first shows beside the common and
+  /// external iliacs' (its mouth as drawn). The branch leaves from the common iliac's end, whose
+  /// round end and the external iliac hide its first millimetres: 2.6 mm past the division on the
+  /// default anatomy, 0.3 mm with posteriorInternalIliac, up to 0.3 mm before it on a kinked one.
   double rightInternalIliacOstium = 0.0;
   double leftInternalIliacOstium = 0.0;
   double neckAngleBetaDeg = 0.0; ///< β, angle between the neck's axis and the sac's

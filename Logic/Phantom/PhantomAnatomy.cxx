@@ -74,6 +74,48 @@ double OstiumLowerEdgeDepthMm(double R, double rho, const Eigen::Vector3d& d, co
   return -lowest;
 }
 
+/// Where the mouth of a straight branch tube that leaves from the end of `parents`' first tube
+/// begins: the least projection on `axis`, from the branch's first axis point, of the branch's
+/// lateral surface where it lies outside every parent (the surface the lumen shows, whose rim is
+/// the mouth), mm — sampled every 0.02 mm along the branch's first 25 mm and every 0.5° round it.
+/// At a division (the internal iliac leaving where the common iliac ends, the external iliac going
+/// on) the mouth opens up to 2 mm below the division, not at it: the parent's round end and the
+/// external iliac hide the branch's first millimetres. 25 mm when no surface there shows.
+double MouthUpstreamEdgeMm(const Tube& branch, const std::vector<Tube>& parents, const Eigen::Vector3d& axis)
+{
+  const Point3 o = branch.axis.front();
+  const Eigen::Vector3d d = (branch.axis[1] - o).normalized(), e1 = d.unitOrthogonal(), e2 = d.cross(e1);
+  const double rho = branch.radiusAt(0.0);
+  const auto outside = [&](const Point3& x)
+  {
+    for (const Tube& t : parents)
+      for (std::size_t k = 0; k + 1 < t.axis.size(); ++k)
+      {
+        const Eigen::Vector3d ab = t.axis[k + 1] - t.axis[k];
+        const double u = std::clamp((x - t.axis[k]).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+        if ((x - (t.axis[k] + u * ab)).norm() <= t.radiusAt(0.0))
+          return false;
+      }
+    return true;
+  };
+  double upstream = 25.0;
+  for (int k = 0; k < 720; ++k)
+  {
+    const double psi = pi * k / 360.0;
+    const Eigen::Vector3d radial = rho * (std::cos(psi) * e1 + std::sin(psi) * e2);
+    for (double t = 0.0; t <= 25.0; t += 0.02)
+    {
+      const Point3 x = o + t * d + radial;
+      if (outside(x))
+      {
+        upstream = std::min(upstream, (x - o).dot(axis));
+        break; // farther along this generator lies farther downstream (d · axis > 0)
+      }
+    }
+  }
+  return upstream;
+}
+
 /// A renal artery from `origin` (on the aortic axis) toward `hilum`: whole, cut `renalStubMm`
 /// outside the aortic lumen (radius `aorticRadius`), or dividing `renalDivisionMm` outside it into
 /// an upper and a lower branch turned ±renalBranchTurnDeg in the vertical plane of its course.
@@ -267,13 +309,14 @@ Anatomy BuildAnatomy(const PhantomParams& p)
         StraightTube("rightIliacDecoy", { from, from + 35.0 * Unit(lateral * 0.7, 0.65, -0.3) }, lumenOf(0.55 * r)));
     }
     (side == 0 ? truth.sizing.rightInternalIliacRadius : truth.sizing.leftInternalIliacRadius) = lumenOf(0.55 * r);
-    // The internal iliac's ostium on the common iliac's wall: its most upstream point along the
-    // common iliac's axis (the branch leaves that axis at its end; an oblique branch's ostium starts
-    // there, where the common iliac divides).
+    // The internal iliac's ostium: the most upstream point, along the common iliac's last axis
+    // piece, of its mouth as drawn (MouthUpstreamEdgeMm).
     const Eigen::Vector3d commonAxis = (common.back() - common[common.size() - 2]).normalized();
     (side == 0 ? truth.sizing.rightInternalIliacOstium : truth.sizing.leftInternalIliacOstium) =
-      commonIliacLengthMm[side] -
-      OstiumLowerEdgeDepthMm(r - wallMm, lumenOf(0.55 * r), (internal[1] - internal[0]).normalized(), commonAxis);
+      commonIliacLengthMm[side] +
+      MouthUpstreamEdgeMm(StraightTube("", internal, lumenOf(0.55 * r)),
+                          { StraightTube("", common, r - wallMm), StraightTube("", external, lumenOf(0.75 * r)) },
+                          commonAxis);
     if (wallMm > 0.0)
     {
       anatomy.wallTubes.push_back(StraightTube(prefix + "IliacWall", common, r));

@@ -386,9 +386,9 @@ TEST_P(GraftThroughTheSac, AxisAsLongAsItsFabricAndEdgesWhereItEnds)
   ExpectDeployedAsPlanned(plan);
   // The internal iliac ostia, judged where the graft ends: the fit check's overlap is that of the
   // leg's last ring as fitted (read back off the surface) with the ostium as read; and against the
-  // truth's upstream edge of the ostium (along the true common iliac's axis from B), an edge past
-  // it by more than the fit check's 0.5 mm tolerance and the edge's reading (0.7-1.9 mm low on this
-  // series; its tolerance is issue 47's) cannot pass.
+  // truth's upstream edge of the ostium (its mouth as drawn, along the true common iliac's axis from
+  // B), an edge past it by more than the fit check's 0.5 mm tolerance and the edge's reading (at
+  // most 0.1 mm below it: Issue46/InternalIliacMouth) cannot pass.
   const Point3 B = TruthLandmark(phantom, "aorticBifurcation");
   for (int side = 0; side < 2; ++side)
   {
@@ -413,7 +413,7 @@ TEST_P(GraftThroughTheSac, AxisAsLongAsItsFabricAndEdgesWhereItEnds)
               << " mm below the truth's, the graft " << -o->overlapMm << " mm above it\n";
     // 0.1 mm: the last ring's centre projected back onto the iliac against its plane's abscissa.
     EXPECT_NEAR(o->overlapMm, edgeOnIliac - o->upperAbscissaMm, 0.1);
-    constexpr double edgeReadingMm = 2.0;
+    constexpr double edgeReadingMm = 0.1;
     if (past > FitCheckParams{}.ostiumOverlapToleranceMm + edgeReadingMm)
     {
       EXPECT_FALSE(plan.fitCheck.Passed()) << "the edge covers the ostium";
@@ -530,7 +530,8 @@ TEST_P(NeckThrombusSeries, NoPassUnderTheMinimumAndTheUncertaintyFollowsTheSlice
   EXPECT_GE(fit.proximalSealUncertaintyMm, std::max(2.0, 2.0 * 0.94 * c.sliceMm));
   // Not asserted yet (issue 46 item 2 open): the reading within its uncertainty of the truth. On
   // this series it reads 3.0-3.1 mm long on 0.8 and 1 mm slices too (9 for 5.9, 15 for 11.9, 17
-  // for 13.9 mm), a bias the uncertainty does not cover; its cause is not yet found.
+  // for 13.9 mm): the phantom's drawing, not the plan's reading (docs/limitations.md: drawn per
+  // level it reads −0.6…+0.2 mm; that drawing waits for two classes it uncovered).
   // The safety the issue asks for: no passed fit check on a healthy neck under the 10 mm minimum.
   if (truth < 10.0)
   {
