@@ -91,6 +91,21 @@ std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph,
           const double score = std::min(right.radius, left.radius);
           const std::string where =
             "the junction at " + FormatPoint(graph.nodes[n].position) + " mm LPS has the shape of a Y, but ";
+          // Two lower limbs that meet again are one vessel's skeleton looping round something in
+          // its lumen (a plaque's blurred end grown into the lumen as a thin shell round it), not
+          // two vessels parting: the wider strand, followed down, and the other join and run on
+          // as one.
+          const std::set<int> rightNodes(rightPath.nodes.begin() + 1, rightPath.nodes.end());
+          const auto rejoined = std::find_if(leftPath.nodes.begin() + 1, leftPath.nodes.end(),
+                                             [&](int node) { return rightNodes.count(node) > 0; });
+          if (rejoined != leftPath.nodes.end())
+          {
+            refused.push_back({ n, score,
+                                where + "its two lower limbs meet again at " +
+                                  FormatPoint(graph.nodes[*rejoined].position) +
+                                  " mm LPS: a loop of one vessel's skeleton, not two vessels parting" });
+            continue;
+          }
           // The iliacs part; a dissection's two channels run on side by side (LimbDivergence.h).
           // Limbs too short to tell (under 4 mm: the skeleton's fork at a cut face) make no Y.
           const LimbDivergence parting = MeasureLimbDivergence(rightPath.points, rightPath.radii, leftPath.points,

@@ -25,7 +25,9 @@
 ///    radius. Of several such junctions the one with the widest pair of lower branches wins;
 ///    a runner-up within 10 % of it, elsewhere, makes the answer ambiguous. The two lower limbs
 ///    must part (LimbDivergence.h): two that run on side by side, a septum apart — the true and
-///    false lumens of a dissection — are refused.
+///    false lumens of a dissection — are refused; and two that meet again (followed down, they
+///    pass a common node: the skeleton looping round a plaque's blurred end grown into the lumen)
+///    are one vessel, not two, and refused too.
 ///    **A partial Y** — only where the scan holds no whole one — is a junction of that shape whose
 ///    lower limb(s) fall short of `minimumIliacLengthMm` or `minimumIliacDescentMm` because the
 ///    scan's inferior border cuts them (the vessel followed ends at the border: its inscribed

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "Centerlines/SmoothCenterline.h"
+#include "Centerlines/VesselOrigins.h"
 #include "CenterlineTestSupport.h"
 #include "CropSupport.h"
 #include "Common/Errors.h"
@@ -242,6 +243,28 @@ INSTANTIATE_TEST_SUITE_P(MillimetresFromTheBifurcation,
                            return (info.param < 0 ? "Below" : "Above") + std::to_string(int(std::abs(info.param))) +
                                   "mm";
                          });
+
+// A loop of the aorta's skeleton — a strand beside it, as wide as an iliac, leaving it and joining
+// it again 40 mm lower (as a neck plaque's blurred end grown into the lumen as a thin shell made
+// one) — forms a junction with one vessel up and two down to opposite sides, wider than the real
+// iliacs: its two "limbs" meet again below, so it is one vessel's loop, not the bifurcation.
+// (Taken for the bifurcation, the aorta ended 30 mm below its top and both "iliacs" ran down the
+// same leg.)
+TEST(LabelAortoIliacTree, LoopBesideTheAorta_NotTheBifurcation)
+{
+  const std::vector<testing::Capsule> y{
+    { Point3(0, 0, 0), Point3(0, 0, 160), 10.0 },   { Point3(0, 0, 0), Point3(-45, 0, -110), 5.0 },
+    { Point3(0, 0, 0), Point3(45, 0, -110), 5.0 },  { Point3(0, 0, 130), Point3(17, 0, 118), 5.5 },
+    { Point3(17, 0, 118), Point3(17, 0, 98), 5.5 }, { Point3(17, 0, 98), Point3(0, 0, 86), 5.5 }
+  };
+  const auto mask = testing::PaintCapsules(y, { 1.0, 1.0, 1.0 });
+  const CenterlineTree tree = testing::CenterlinesFromMask(*mask);
+  // 3 mm: the junction of the capsules' skeleton lies within a voxel or two of their meeting point.
+  EXPECT_NEAR(FindAorticBifurcation(tree).lps.z(), 0.0, 3.0);
+  EXPECT_GT(tree.aorta.LengthMm(), 150.0); // up to the top (160 mm, less the end's radius)
+  EXPECT_LT(tree.rightIliac.points(tree.rightIliac.Size() - 1, 0), -30.0); // patient right: −x
+  EXPECT_GT(tree.leftIliac.points(tree.leftIliac.Size() - 1, 0), 30.0);
+}
 
 TEST(LabelAortoIliacTree, ScanEndingAboveTheIliacs_NoBifurcationError)
 {
