@@ -79,24 +79,19 @@ double OstiumLowerEdgeDepthMm(double R, double rho, const Eigen::Vector3d& d, co
 /// lateral surface where it lies outside every parent (the surface the lumen shows, whose rim is
 /// the mouth), mm — sampled every 0.02 mm along the branch's first 25 mm and every 0.5° round it.
 /// At a division (the internal iliac leaving where the common iliac ends, the external iliac going
-/// on) the mouth opens up to 2 mm below the division, not at it: the parent's round end and the
-/// external iliac hide the branch's first millimetres. 25 mm when no surface there shows.
+/// on) the mouth opens below the division, not at it (2.6 mm on the default anatomy): the parent's
+/// round end and the external iliac hide the branch's first millimetres. 25 mm when no surface
+/// there shows.
 double MouthUpstreamEdgeMm(const Tube& branch, const std::vector<Tube>& parents, const Eigen::Vector3d& axis)
 {
   const Point3 o = branch.axis.front();
   const Eigen::Vector3d d = (branch.axis[1] - o).normalized(), e1 = d.unitOrthogonal(), e2 = d.cross(e1);
   const double rho = branch.radiusAt(0.0);
+  std::vector<TubeDistance> parentDistances(parents.begin(), parents.end());
   const auto outside = [&](const Point3& x)
   {
-    for (const Tube& t : parents)
-      for (std::size_t k = 0; k + 1 < t.axis.size(); ++k)
-      {
-        const Eigen::Vector3d ab = t.axis[k + 1] - t.axis[k];
-        const double u = std::clamp((x - t.axis[k]).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-        if ((x - (t.axis[k] + u * ab)).norm() <= t.radiusAt(0.0))
-          return false;
-      }
-    return true;
+    return std::all_of(parentDistances.begin(), parentDistances.end(),
+                       [&](TubeDistance& parent) { return parent.SignedDistance(x) > 0.0; });
   };
   double upstream = 25.0;
   for (int k = 0; k < 720; ++k)

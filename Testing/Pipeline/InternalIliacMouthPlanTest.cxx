@@ -67,7 +67,7 @@ TEST_P(InternalIliacMouth, EdgeReadAtOrAboveTheMouth)
     const Point3 end =
       testing::TruthLandmark(phantom.truth, side == 0 ? "rightIliacBifurcation" : "leftIliacBifurcation");
     const Point3 first = Point3(lateral * std::sin(angle), 0.0, -std::cos(angle));
-    const Point3 kink = c.kinkDeg > 0.0 ? Point3(B + 10.0 * first) : B;
+    const Point3 kink = c.kinkDeg > 0.0 ? Point3(B + phantom::kinkFromBifurcationMm * first) : B;
     const Eigen::Vector3d axis = (end - kink).normalized();
     const PhantomSizing& truth = phantom.truth.sizing;
     const double length = side == 0 ? truth.rightIliacLength : truth.leftIliacLength;
