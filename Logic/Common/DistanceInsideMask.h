@@ -6,7 +6,8 @@
 /// (Felzenszwalb & Huttenlocher, Theory of Computing 8, 2012), carrying each voxel's nearest site
 /// (the feature transform of Maurer, Qi & Raghavan, IEEE PAMI 25, 2003). Linear in the box's
 /// voxels, on two cores (TwoCores.h; the result is the same as one core's); 4 + 12 bytes per voxel
-/// plus a line of scratch per core. When `outsideIsBackground`, the
+/// plus 16 lines of scratch per core (lines along j and k are transformed in blocks of 16 neighbours
+/// along i, for locality on big boxes). When `outsideIsBackground`, the
 /// one-voxel shell around the box is background too (its sites may lie just outside the box).
 ///
 /// Input: `mask` (MaskGrid, 0/1), `spacingMm` (the i, j, k spacing). Output, per voxel of the box:

@@ -68,11 +68,15 @@ void DrawAorticWall(const AorticWall& wall,
                     std::vector<unsigned char>& labels,
                     std::vector<unsigned char>& layer);
 
-/// Calls f(flat, lps) for every voxel of the grid whose centre may lie within the LPS box.
+/// Calls f(flat, lps) for every voxel of the grid whose centre may lie within the LPS box: those
+/// whose centre lies within the box widened on each LPS axis by one voxel's extent along it (on an
+/// axis-aligned grid, the index box's floor and ceiling; on an oblique grid, each row of voxels is
+/// clipped to the widened box, so a tall box on a tilted grid visits its slab, not the grid).
 template<typename Function>
 void ForEachVoxelNear(const Grid& grid, const Point3& lo, const Point3& hi, Function f)
 {
-  const Eigen::Matrix3d toIndex = grid.IndexToLps().inverse();
+  const Eigen::Matrix3d m = grid.IndexToLps();
+  const Eigen::Matrix3d toIndex = m.inverse();
   Eigen::Vector3d iMin = Eigen::Vector3d::Constant(1e18), iMax = -iMin;
   for (int corner = 0; corner < 8; ++corner)
   {
@@ -84,15 +88,33 @@ void ForEachVoxelNear(const Grid& grid, const Point3& lo, const Point3& hi, Func
   std::array<long, 3> first{}, last{};
   for (int a = 0; a < 3; ++a)
   {
-    first[a] = std::max(0L, static_cast<long>(std::floor(iMin[a])));
-    last[a] = std::min(grid.size[a] - 1, static_cast<long>(std::ceil(iMax[a])));
+    first[a] = std::max(0L, static_cast<long>(std::floor(std::max(iMin[a], -1e9))));
+    last[a] = std::min(grid.size[a] - 1, static_cast<long>(std::ceil(std::min(iMax[a], 1e9))));
   }
-  const Eigen::Matrix3d m = grid.IndexToLps();
+  // The box widened by a voxel's LPS extent, and the i range of a row inside it (the row's centres
+  // are rowStart + i · m.col(0)).
+  const Eigen::Vector3d pad = m.cwiseAbs().rowwise().sum();
+  const Eigen::Vector3d wideLo = lo - pad, wideHi = hi + pad;
   for (long k = first[2]; k <= last[2]; ++k)
   {
     for (long j = first[1]; j <= last[1]; ++j)
     {
-      for (long i = first[0]; i <= last[0]; ++i)
+      const Point3 rowStart = grid.origin + m * Eigen::Vector3d(0.0, double(j), double(k));
+      double from = double(first[0]), to = double(last[0]);
+      for (int c = 0; c < 3 && from <= to; ++c)
+      {
+        const double step = m(c, 0);
+        if (std::abs(step) < 1e-12)
+        {
+          if (rowStart[c] < wideLo[c] || rowStart[c] > wideHi[c])
+            to = from - 1.0; // the row misses the box on this axis
+          continue;
+        }
+        const double a = (wideLo[c] - rowStart[c]) / step, b = (wideHi[c] - rowStart[c]) / step;
+        from = std::max(from, std::ceil(std::min(a, b)));
+        to = std::min(to, std::floor(std::max(a, b)));
+      }
+      for (long i = static_cast<long>(from); i <= static_cast<long>(to); ++i)
       {
         f(grid.Flat(i, j, k), Point3(grid.origin + m * Eigen::Vector3d(double(i), double(j), double(k))));
       }
