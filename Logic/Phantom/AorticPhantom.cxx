@@ -177,8 +177,8 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
                        [&](long flat, const Point3& x)
                        {
                          const double sd = distance.SignedDistance(x);
-                         contrast[flat] =
-                           std::max(contrast[flat], float((p.wallHu - p.tissueHu) * EdgeProfile(sd, p.blurSigmaMm)));
+                         contrast[flat] = std::max(
+                           contrast[flat], float((p.wallHu - p.tissueHu) * SaturatedEdgeProfile(sd, p.blurSigmaMm)));
                          if (sd < 0.0 && labels[flat] == TissueLabel)
                            labels[flat] = WallLabel;
                          if (sd < 0.0 && layer[flat] == static_cast<unsigned char>(UnderLumen::Tissue))
@@ -200,7 +200,7 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
                        // The bolus's cranio-caudal gradient, from the site's level (0 by default).
                        const double lumenContrast =
                          p.lumenHu + p.bolusGradientHuPerCm * (x.z() - anatomy.siteZ) / 10.0 - p.tissueHu;
-                       const double profile = EdgeProfile(sd, p.blurSigmaMm);
+                       const double profile = SaturatedEdgeProfile(sd, p.blurSigmaMm);
                        if (layer.empty())
                          contrast[flat] = std::max(contrast[flat], float(lumenContrast * profile));
                        else if (profile > 0.0)
@@ -242,8 +242,8 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
                      [&](long flat, const Point3& x)
                      {
                        const double sd = EllipsoidSignedDistance(kidney, x);
-                       contrast[flat] =
-                         std::max(contrast[flat], float((p.kidneyHu - p.tissueHu) * EdgeProfile(sd, p.blurSigmaMm)));
+                       contrast[flat] = std::max(
+                         contrast[flat], float((p.kidneyHu - p.tissueHu) * SaturatedEdgeProfile(sd, p.blurSigmaMm)));
                        if (sd < 0.0 && labels[flat] == TissueLabel)
                        {
                          labels[flat] = KidneyLabel;
@@ -259,8 +259,8 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
                      {
                        const double rho = std::hypot(x.x(), x.y() - anatomy.columnY);
                        const double outer = rho - vertebraRadiusMm, inner = outer + corticalThicknessMm;
-                       const double bone = (corticalHu - p.tissueHu) * EdgeProfile(outer, p.blurSigmaMm) -
-                                           (corticalHu - cancellousHu) * EdgeProfile(inner, p.blurSigmaMm);
+                       const double bone = (corticalHu - p.tissueHu) * SaturatedEdgeProfile(outer, p.blurSigmaMm) -
+                                           (corticalHu - cancellousHu) * SaturatedEdgeProfile(inner, p.blurSigmaMm);
                        contrast[flat] = std::max(contrast[flat], float(bone));
                        if (outer < 0.0 && labels[flat] == TissueLabel)
                        {

@@ -21,6 +21,11 @@ double EdgeProfile(double signedDistance, double sigma)
   {
     return signedDistance < 0.0 ? 1.0 : (signedDistance > 0.0 ? 0.0 : 0.5);
   }
+  return 0.5 * std::erfc(signedDistance / (sigma * std::sqrt(2.0)));
+}
+
+double SaturatedEdgeProfile(double signedDistance, double sigma)
+{
   // Beyond 8.5 σ the profile is 1 to double precision on the inside (0.5·erfc(−6.01) rounds to
   // 1.0) and under 1.2e-17 on the outside, below any HU the phantom can round to: exact 1 and 0,
   // without the erfc (most voxels a box visits lie there).
@@ -29,7 +34,7 @@ double EdgeProfile(double signedDistance, double sigma)
     return 0.0;
   if (signedDistance <= -cutoff)
     return 1.0;
-  return 0.5 * std::erfc(signedDistance / (sigma * std::sqrt(2.0)));
+  return EdgeProfile(signedDistance, sigma);
 }
 
 Grid MakeGrid(const PhantomParams& p, const std::array<Point3, 2>& bounds)

@@ -33,6 +33,11 @@ struct Grid
 /// Standard normal CDF, with the hard step for an unblurred edge.
 double EdgeProfile(double signedDistance, double sigma);
 
+/// EdgeProfile, exactly 1 and 0 beyond 8.5 σ inside and outside (the same HU after rounding,
+/// without the erfc). Only for values added to the HU: where tails are compared — which layer is
+/// the brightest at a voxel (DrawAorticWall) — the exact EdgeProfile decides, as it always has.
+double SaturatedEdgeProfile(double signedDistance, double sigma);
+
 /// See PhantomRaster.cxx.
 Grid MakeGrid(const PhantomParams& p, const std::array<Point3, 2>& bounds);
 

@@ -89,16 +89,22 @@ def segment_distance(x, y, z, a, b):
 
 
 def draw(x, y, z, concentric):
-    """Class masks on points (x, y, z), LPS mm: a dict of boolean arrays, painted in HU order."""
+    """Class masks on the points of a grid, LPS mm: a dict of boolean arrays of its shape, painted in HU order.
+
+    x, y and z are the grid's coordinates as arrays that broadcast against each other (x along the
+    last axis, y the middle one, z the first): every value is computed on the points it depends on,
+    and each branch only within its own reach, which gives the same masks as full grids, faster.
+    """
+    shape = np.broadcast_shapes(x.shape, y.shape, z.shape)
     r_out = outer_radius(z)
     r_lumen, cy = lumen_circle(z, concentric)
     rho = np.hypot(x, y)
     above_fork = z >= 0.0
     aorta_outer = (rho <= r_out) & above_fork
     aorta_lumen = (np.hypot(x, y - cy) <= r_lumen) & above_fork
-    lumen = aorta_lumen.copy()
-    outer = aorta_outer.copy()
-    fat_reach = rho <= r_out + 12.0
+    lumen = np.broadcast_to(aorta_lumen, shape).copy()
+    outer = np.broadcast_to(aorta_outer, shape).copy()
+    fat_reach = np.broadcast_to(rho <= r_out + 12.0, shape).copy()
     # Side branches and iliacs: lumen tubes with a wall; blind ends in fat.
     branches = [((0, 0, SITE_Z + RENAL_R), (70, 8, SITE_Z + RENAL_R), RENAL_R, 1.0),  # left renal, the lowest
                 ((0, 0, SITE_Z + 11.0), (-70, 8, SITE_Z + 13.0), RENAL_R, 1.0),  # right renal
@@ -115,10 +121,16 @@ def draw(x, y, z, concentric):
         reach = radius + wall + 8.0
         if min(a[2], b[2]) - reach > z_hi or max(a[2], b[2]) + reach < z_lo:
             continue  # the segment is nowhere near these slices
-        dist, _ = segment_distance(x, y, z, a, b)
-        lumen |= dist <= radius
-        outer |= dist <= radius + wall
-        fat_reach |= dist <= radius + wall + 8.0
+        # Only the points within the segment's box widened by its reach can lie in these masks.
+        near_x = np.flatnonzero((x.ravel() >= min(a[0], b[0]) - reach) & (x.ravel() <= max(a[0], b[0]) + reach))
+        near_y = np.flatnonzero((y.ravel() >= min(a[1], b[1]) - reach) & (y.ravel() <= max(a[1], b[1]) + reach))
+        if near_x.size == 0 or near_y.size == 0:
+            continue
+        cols, rows = slice(near_x[0], near_x[-1] + 1), slice(near_y[0], near_y[-1] + 1)
+        dist, _ = segment_distance(x[..., cols], y[:, rows, :], z, a, b)
+        lumen[:, rows, cols] |= dist <= radius
+        outer[:, rows, cols] |= dist <= radius + wall
+        fat_reach[:, rows, cols] |= dist <= radius + wall + 8.0
     aorta_inner = aorta_outer & (rho <= r_out - WALL_MM)
     wall = outer & ~lumen & ~aorta_inner
     thrombus = aorta_inner & ~lumen
@@ -142,8 +154,9 @@ def draw(x, y, z, concentric):
     bone_r = np.hypot(x, y - vy)
     bone = bone_r <= 18.0
     cortex = bone & (bone_r >= 16.0)
-    return {"fat": fat_reach, "psoas": psoas, "ivc": ivc, "duodenum": duodenum, "bone": bone, "cortex": cortex,
-            "wall": wall, "thrombus": thrombus, "calcium": calcium, "lumen": lumen}
+    masks = {"fat": fat_reach, "psoas": psoas, "ivc": ivc, "duodenum": duodenum, "bone": bone, "cortex": cortex,
+             "wall": wall, "thrombus": thrombus, "calcium": calcium, "lumen": lumen}
+    return {name: np.broadcast_to(mask, shape) for name, mask in masks.items()}
 
 
 def make_scan(path, spacing, concentric, noise_seed):
@@ -159,9 +172,9 @@ def make_scan(path, spacing, concentric, noise_seed):
     yi = lo[1] + (np.arange(size[1] * sub[1]) + 0.5) * spacing[1] / sub[1]
     for k in range(size[2]):
         zk = lo[2] + (k * sub[2] + np.arange(sub[2]) + 0.5) * spacing[2] / sub[2]
-        z, y, x = np.meshgrid(zk, yi, xi, indexing="ij")
+        z, y, x = zk[:, None, None], yi[None, :, None], xi[None, None, :]
         masks = draw(x, y, z, concentric)
-        value = np.full(x.shape, HU["tissue"], np.float32)
+        value = np.full(masks["lumen"].shape, HU["tissue"], np.float32)
         for name in ("fat", "psoas", "ivc", "duodenum", "bone", "cortex", "wall", "thrombus", "calcium", "lumen"):
             value[masks[name]] = HU[name]
         within = (z >= 0.0) & (z <= SITE_Z)

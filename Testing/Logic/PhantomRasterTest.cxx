@@ -1,5 +1,5 @@
 // The phantom's raster helpers (Logic/Phantom/PhantomRaster.h): which voxels a box visits, and
-// the edge profile's cut-off.
+// the edge profile saturated beyond its tails.
 #include <Eigen/Geometry>
 #include <cmath>
 #include <map>
@@ -96,19 +96,21 @@ TEST(PhantomRaster, ForEachVoxelNear_AxisAlignedGridVisitsTheIndexBox)
   EXPECT_EQ(visited, expected);
 }
 
-TEST(PhantomRaster, EdgeProfile_CutOffBeyondEightAndAHalfSigmaIsTheErfcToDoublePrecision)
+TEST(PhantomRaster, SaturatedEdgeProfile_BeyondEightAndAHalfSigmaIsTheErfcToDoublePrecision)
 {
   const double sigma = 0.6;
   for (const double d : { 8.5, 9.0, 12.0, 30.0 })
   {
     // Inside: 0.5·erfc(−x) is 1.0 in double beyond 8.5 σ.
-    EXPECT_EQ(EdgeProfile(-d * sigma, sigma), 0.5 * std::erfc(-d / std::sqrt(2.0)));
+    EXPECT_EQ(SaturatedEdgeProfile(-d * sigma, sigma), 0.5 * std::erfc(-d / std::sqrt(2.0)));
     // Outside: the erfc's value is under 1.2e-17, 0 HU after any scaling the phantom does.
     EXPECT_LT(0.5 * std::erfc(d / std::sqrt(2.0)), 1.2e-17);
-    EXPECT_EQ(EdgeProfile(d * sigma, sigma), 0.0);
+    EXPECT_EQ(SaturatedEdgeProfile(d * sigma, sigma), 0.0);
+    // The exact profile keeps its tail: DrawAorticWall compares tails.
+    EXPECT_GT(EdgeProfile(d * sigma, sigma), 0.0);
   }
-  EXPECT_DOUBLE_EQ(EdgeProfile(sigma, sigma), 0.5 * std::erfc(1.0 / std::sqrt(2.0)));
-  EXPECT_EQ(EdgeProfile(0.0, sigma), 0.5);
+  EXPECT_DOUBLE_EQ(SaturatedEdgeProfile(sigma, sigma), 0.5 * std::erfc(1.0 / std::sqrt(2.0)));
+  EXPECT_EQ(SaturatedEdgeProfile(0.0, sigma), 0.5);
 }
 
 } // namespace
