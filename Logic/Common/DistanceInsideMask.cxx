@@ -168,8 +168,7 @@ DistanceField DistanceInsideMask(const MaskGrid& mask,
                 // A line of background only (distance 0 throughout) stays as it is: most lines of a
                 // lumen's bounding box.
                 bool any = false;
-                for (long t = 0; t < lines; ++t)
-                  foreground[std::size_t(t)] = false;
+                foreground.fill(false);
                 for (long q = 0; q < length; ++q)
                   for (long t = 0; t < lines; ++t)
                     if (mask.voxels[at(t, q)] != 0)

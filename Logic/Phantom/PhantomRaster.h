@@ -93,8 +93,8 @@ void ForEachVoxelNear(const Grid& grid, const Point3& lo, const Point3& hi, Func
   std::array<long, 3> first{}, last{};
   for (int a = 0; a < 3; ++a)
   {
-    first[a] = std::max(0L, static_cast<long>(std::floor(std::max(iMin[a], -1e9))));
-    last[a] = std::min(grid.size[a] - 1, static_cast<long>(std::ceil(std::min(iMax[a], 1e9))));
+    first[a] = std::max(0L, static_cast<long>(std::floor(iMin[a])));
+    last[a] = std::min(grid.size[a] - 1, static_cast<long>(std::ceil(iMax[a])));
   }
   // The box widened by a voxel's LPS extent, and the i range of a row inside it (the row's centres
   // are rowStart + i · m.col(0)).
