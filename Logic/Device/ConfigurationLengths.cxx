@@ -36,6 +36,9 @@ ConfigurationAnatomy ConfigurationLengths(const CenterlineTree& tree, const Meas
   {
     a.targetToInternalIliacMm[side] = a.targetToBifurcationMm + m.Value(lengths[side]);
     a.internalIliacRadiusMm[side] = InternalIliacRadiusMm(tree, side);
+    if (m.flowDivider.found) // its lowest position within its uncertainty: the seal is not overstated
+      a.targetToFlowDividerMm[side] = a.targetToBifurcationMm + m.iliacStartBeyondBifurcationMm[side] +
+                                      m.flowDivider.iliacAbscissaMm[side] + m.flowDivider.uncertaintyMm;
     a.targetToIliacEndMm[side] =
       a.targetToBifurcationMm + m.iliacStartBeyondBifurcationMm[side] + iliac[side]->LengthMm();
     const Centerline* branch = tree.FindVessel(side == 0 ? "rightInternalIliac" : "leftInternalIliac");

@@ -12,6 +12,9 @@
 ///    iliac's radius); NaN without a labelled internal iliac;
 ///  - the internal iliac ostium per side: L_AB + the iliac's start beyond B + the upstream edge of
 ///    the internal iliac's ostium on the iliac's centerline (FindBranchOstium), NaN when not located;
+///  - the flow divider per side: L_AB + the iliac's start beyond B + the divider's projection on
+///    that iliac's centerline + its uncertainty (FlowDivider.h: its lowest position, so that no
+///    seal is overstated), NaN when not found;
 ///  - the iliac end per side: L_AB + the iliac centerline's length beyond B;
 ///  - the aortic profile: each trunk ring's abscissa − the target's and its smallest lumen diameter;
 ///  - (d) on the outer wall where it was traced, else on the lumen.

@@ -281,10 +281,11 @@ void LandingFindings(const DeviceFamily& family,
                      DeviceConfiguration& c)
 {
   const std::string name = SideName(side);
-  const double seal = option.distalMm - anatomy.targetToBifurcationMm;
+  const double seal = option.distalMm - anatomy.SealFromMm(side);
   const double lo = c.landingLowMm[side], hi = c.landingHighMm[side];
   const double sealMin = family.ifu.iliacSealLengthMm.min;
-  const double commonIliac = hi - anatomy.targetToBifurcationMm;
+  const double commonIliac = hi - anatomy.SealFromMm(side);
+  const std::string from = std::isfinite(anatomy.targetToFlowDividerMm[side]) ? "flow divider" : "aortic bifurcation";
   const std::string lands =
     option.landing == Landing::Covers
       ? "its shortest combination ends " + Mm(option.distalMm - hi) + " past the internal iliac ostium (covers it)"
@@ -294,9 +295,8 @@ void LandingFindings(const DeviceFamily& family,
     c.findings.push_back(
       { "commonIliacTooShort", side,
         name + " common iliac too short for " + family.name + "'s minimum iliac seal: " + Mm(commonIliac) +
-          " from the aortic bifurcation to the internal iliac ostium (" +
-          Mm(anatomy.targetToInternalIliacMm[side] - hi) + " above the internal iliac origin), needs ≥ " +
-          CompactNumber(sealMin) + " mm; " + lands,
+          " from the " + from + " to the internal iliac ostium (" + Mm(anatomy.targetToInternalIliacMm[side] - hi) +
+          " above the internal iliac origin), needs ≥ " + CompactNumber(sealMin) + " mm; " + lands,
         "an iliac extension into the " + name +
           " external iliac artery that covers the internal iliac (embolise it first), or an iliac branch device" });
   else if (option.landing == Landing::Covers)
@@ -364,7 +364,7 @@ std::optional<Candidate> ConfigureBody(const DeviceFamily& family,
       outer = inner;
     }
     c.coveredLengthMm[side] = option->distalMm;
-    c.sealLengthMm[side] = option->distalMm - anatomy.targetToBifurcationMm;
+    c.sealLengthMm[side] = option->distalMm - anatomy.SealFromMm(side);
     c.marginToInternalIliacMm[side] = c.landingHighMm[side] - option->distalMm;
     LandingFindings(family, anatomy, side, *option, c);
   }
@@ -455,7 +455,8 @@ DeviceConfiguration ConfigureWithoutAlternatives(const DeviceFamily& family,
     base.landingHighMm[side] = anatomy.targetToInternalIliacMm[side] - radius;
     if (std::isfinite(ostium))
       base.landingHighMm[side] = std::min(base.landingHighMm[side], ostium);
-    base.landingLowMm[side] = anatomy.targetToBifurcationMm + family.ifu.iliacSealLengthMm.min;
+    base.sealFromMm[side] = anatomy.SealFromMm(side);
+    base.landingLowMm[side] = base.sealFromMm[side] + family.ifu.iliacSealLengthMm.min;
   }
   std::array<double, 2> landing{ NaN, NaN };
   std::vector<ConfigurationFinding> sizeFindings;
@@ -561,6 +562,12 @@ IpsilateralSide ParseIpsilateralSide(const std::string& text, const std::string&
   if (value == "left")
     return IpsilateralSide::Left;
   throw InputError(parameter + " is '" + text + "'; expected right, left or auto.");
+}
+
+double ConfigurationAnatomy::SealFromMm(int side) const
+{
+  const double divider = targetToFlowDividerMm[std::size_t(side)];
+  return std::isfinite(divider) ? std::max(divider, targetToBifurcationMm) : targetToBifurcationMm;
 }
 
 SideChoice ChooseIpsilateralSide(IpsilateralSide wanted,

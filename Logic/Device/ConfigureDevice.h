@@ -123,6 +123,12 @@ struct ConfigurationAnatomy
   /// Per side, to the internal iliac ostium's upper edge on the common iliac's wall
   /// (FindBranchOstium: the edge the fit check judges coverage by), mm; NaN: not located.
   std::array<double, 2> targetToInternalIliacOstiumMm{ NotMeasured, NotMeasured };
+  /// Per side, to the flow divider on that side's path (where the lumen divides and a limb starts
+  /// to seal in the common iliac: FlowDivider.h), mm; NaN: not found.
+  std::array<double, 2> targetToFlowDividerMm{ NotMeasured, NotMeasured };
+  /// Where a side's iliac seal is measured from: the flow divider, or B where it was not found
+  /// (never above B).
+  double SealFromMm(int side) const;
   /// Per side, to the end of the iliac centerline in view (the external iliac), mm.
   std::array<double, 2> targetToIliacEndMm{ NotMeasured, NotMeasured };
   /// (e)/(f) on the family's wall (as sized), mm.
@@ -209,7 +215,8 @@ struct DeviceConfiguration
   std::array<double, 2> coveredLengthMm{ 0.0, 0.0 };         ///< from the proximal edge to each side's distal edge
   std::array<double, 2> landingLowMm{ 0.0, 0.0 };            ///< W_lo per side
   std::array<double, 2> landingHighMm{ 0.0, 0.0 };           ///< W_hi per side
-  std::array<double, 2> sealLengthMm{ 0.0, 0.0 };            ///< planned: distal edge − L_AB
+  std::array<double, 2> sealFromMm{ 0.0, 0.0 };              ///< per side: ConfigurationAnatomy::SealFromMm, mm
+  std::array<double, 2> sealLengthMm{ 0.0, 0.0 };            ///< planned: distal edge − sealFromMm
   std::array<double, 2> marginToInternalIliacMm{ 0.0, 0.0 }; ///< W_hi − distal edge (≥ 0: ostium clear)
   double gateEndMm = 0.0;                                    ///< g along the contralateral path
   double gateClearanceMm = 0.0;                              ///< L_AB − g

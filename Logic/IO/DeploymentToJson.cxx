@@ -127,7 +127,12 @@ nlohmann::json DeploymentToJson(const RepairPlan& plan)
         { "siteEdgeUncertaintyMm", plan.measurements.site.edgeUncertaintyMm },
         { "targetToBifurcationMm", NumberOrNull(toBifurcation) },
         { "targetToRightInternalIliacMm", NumberOrNull(toBifurcation + plan.measurements.Value("rightIliacLength")) },
-        { "targetToLeftInternalIliacMm", NumberOrNull(toBifurcation + plan.measurements.Value("leftIliacLength")) } } },
+        { "targetToLeftInternalIliacMm", NumberOrNull(toBifurcation + plan.measurements.Value("leftIliacLength")) },
+        { "targetToFlowDividerMm",
+          NumberOrNull(toBifurcation + plan.measurements.flowDivider.DepthBelowMm(plan.measurements.bifurcationLps)) },
+        { "sealFromMm",
+          { { "right", c->configured ? Json(c->sealFromMm[0]) : Json(nullptr) },
+            { "left", c->configured ? Json(c->sealFromMm[1]) : Json(nullptr) } } } } },
     { "findings", findings },
     { "notes", c->notes },
     { "alternatives", alternatives }

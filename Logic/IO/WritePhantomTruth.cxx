@@ -1,5 +1,6 @@
 #include "IO/WritePhantomTruth.h"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -13,6 +14,8 @@ namespace
 
 std::string Number(double value)
 {
+  if (!std::isfinite(value))
+    return "null"; // a truth the phantom does not have (no flow divider within reach)
   char buffer[64];
   std::snprintf(buffer, sizeof(buffer), "%.6g", value);
   return buffer;
@@ -58,6 +61,9 @@ void WritePhantomTruth(const AorticPhantom& phantom, const std::string& path)
        << ", \"proximalSiteToBifurcationLength\": " << Number(s.proximalSiteToBifurcationLength)
        << ", \"rightIliacLength\": " << Number(s.rightIliacLength)
        << ", \"leftIliacLength\": " << Number(s.leftIliacLength)
+       << ", \"proximalSiteToFlowDividerLength\": " << Number(s.proximalSiteToFlowDividerLength)
+       << ", \"rightIliacLengthFromFlowDivider\": " << Number(s.rightIliacLengthFromFlowDivider)
+       << ", \"leftIliacLengthFromFlowDivider\": " << Number(s.leftIliacLengthFromFlowDivider)
        << ", \"rightInternalIliacRadius\": " << Number(s.rightInternalIliacRadius)
        << ", \"leftInternalIliacRadius\": " << Number(s.leftInternalIliacRadius)
        << ", \"rightInternalIliacOstium\": " << Number(s.rightInternalIliacOstium)

@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 
+#include "Centerlines/FlowDivider.h"
 #include "Centerlines/VesselOrigins.h"
 #include "Common/Format.h"
 #include "Common/Median.h"
@@ -223,6 +224,37 @@ void MeasureLengths(const MeasureContext& c, double sNeckEnd, double iliacOffset
   }
 }
 
+/// Site to the flow divider along the aorta (B's abscissa plus the divider's depth below it: the
+/// aortic centerline extended along the distal aorta's axis) and from the divider to each internal
+/// iliac origin along the iliac centerline (FlowDivider.h); NaN with a warning where it was not
+/// found or no lumen mask was given.
+void MeasureFlowDividerLengths(const MeasureContext& c, const LabelImage* lumen, Measurements& out)
+{
+  FlowDivider& f = out.flowDivider;
+  if (lumen)
+    f = FindFlowDivider(*lumen, c.tree);
+  else
+    f.reason = "no lumen mask was given";
+  if (!f.found)
+    out.warnings.push_back(
+      "The flow divider (where the aortic lumen divides into the iliacs) was not found: " + f.reason +
+      "; the lengths from it are not measured and the limbs' seal is judged from "
+      "the aortic bifurcation.");
+  const double depth = f.DepthBelowMm(c.B);
+  out.values.push_back(
+    { "proximalSiteToFlowDividerLength", c.sBif + depth - c.sSite, "mm",
+      "proximal site to the flow divider (where the aortic lumen divides" +
+        (f.found ? ", " + FormatNumber(depth, 1) + " mm below the aortic bifurcation" : std::string()) +
+        "), along the aortic centerline and the distal aorta's axis",
+      "aorta", c.sSite });
+  for (int side = 0; side < 2; ++side)
+    out.values.push_back({ std::string(Side(side)) + "IliacLengthFromFlowDivider",
+                           c.internalIliacAbscissa[side] - f.iliacAbscissaMm[side], "mm",
+                           "flow divider to the internal iliac origin, along the iliac centerline (the length a "
+                           "limb can seal in)",
+                           c.iliac[side]->name, f.iliacAbscissaMm[side] });
+}
+
 /// β (neck against aneurysm axis), α (suprarenal against neck axis) and the neck's conicity.
 void MeasureNeckAngles(const MeasureContext& c, double sNeckEnd, const RingDiameters& a, Measurements& out)
 {
@@ -331,7 +363,8 @@ void LeaveOutWhatTheScanDoesNotHold(const MeasureContext& c, Measurements& out)
     if (!std::isfinite(coverage))
       continue;
     const std::string s = Side(side);
-    std::vector<std::string> names{ s + "IliacLength", s + "IliacTortuosity", s + "AccessMinDiameter" };
+    std::vector<std::string> names{ s + "IliacLength", s + "IliacLengthFromFlowDivider", s + "IliacTortuosity",
+                                    s + "AccessMinDiameter" };
     if (!std::isfinite(c.internalIliacAbscissa[side]))
       names.insert(names.begin(), { s + "IliacLumenDiameter", s + "IliacDiameter" });
     if (coverage < BifurcationIliacReachMm)
@@ -458,11 +491,11 @@ void LeaveOutWhatNeedsTheSite(const MeasureContext& c, Measurements& out)
 {
   if (c.site.Known())
     return;
-  const std::string list =
-    LeaveOut({ "proximalNeckLumenDiameter", "neckLumenDiameter15mm", "proximalNeckDiameter", "neckDiameter15mm",
-               "proximalNeckLength", "proximalSiteToBifurcationLength", "neckAngleBeta", "neckAngleAlpha",
-               "neckConicity", "thrombusVolume", "sacVolume", "neckThrombusArc", "neckCalcificationArc" },
-             out);
+  const std::string list = LeaveOut(
+    { "proximalNeckLumenDiameter", "neckLumenDiameter15mm", "proximalNeckDiameter", "neckDiameter15mm",
+      "proximalNeckLength", "proximalSiteToBifurcationLength", "proximalSiteToFlowDividerLength", "neckAngleBeta",
+      "neckAngleAlpha", "neckConicity", "thrombusVolume", "sacVolume", "neckThrombusArc", "neckCalcificationArc" },
+    out);
   out.outerNeckEndMm = nan;
   out.reverseTaperMm = { nan, nan };
   out.warnings.push_back("The proximal implantation site is not known (no renal artery in view, no lowestRenalOstium "
@@ -552,6 +585,7 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
     out.iliacStartBeyondBifurcationMm[side] = iliacOffset[side];
     out.internalIliacAbscissaMm[side] = c.internalIliacAbscissa[side];
   }
+  MeasureFlowDividerLengths(c, lumen, out);
   MeasureNeckAngles(c, sNeckEnd, a, out);
   MeasureIliacAccess(c, iliacOffset, out);
   LeaveOutWhatTheScanDoesNotHold(c, out);

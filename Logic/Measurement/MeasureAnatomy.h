@@ -36,6 +36,10 @@
 ///    mean before the aorta widens; `proximalSiteToBifurcationLength`: site to
 ///    B; `rightIliacLength`/`leftIliacLength`: B to the internal iliac origin along the iliac (the
 ///    origin found like B: where the common, external and internal iliac axes meet);
+///    `proximalSiteToFlowDividerLength` and `rightIliacLengthFromFlowDivider`/
+///    `leftIliacLengthFromFlowDivider`: the same to and from the **flow divider**, where the lumen
+///    divides (FlowDivider.h; with the lumen mask), the level planners and the IFUs take the limb
+///    lengths from — B is where the axes meet, above it;
 ///  - `neckAngleBeta`: between the neck axis (chord over the first min(15 mm, neck length, ≥ 5 mm)
 ///    below the site) and the aneurysm axis (chord from the neck's end to B); `neckAngleAlpha`:
 ///    between the suprarenal axis (chord over up to 30 mm above the site, at least 10 mm) and the
@@ -72,6 +76,7 @@
 #include <vector>
 
 #include "Centerlines/Centerlines.h"
+#include "Centerlines/FlowDivider.h"
 #include "Centerlines/ProximalSite.h"
 #include "Measurement/MeasureDiameters.h"
 #include "Stent/StentMesh.h"
@@ -140,6 +145,8 @@ struct Measurements
   std::array<double, 2> iliacStartBeyondBifurcationMm{ 0.0, 0.0 };
   std::array<double, 2> internalIliacAbscissaMm{ std::numeric_limits<double>::quiet_NaN(),
                                                  std::numeric_limits<double>::quiet_NaN() };
+  /// Where the lumen divides (FlowDivider.h); `found` false without a lumen mask.
+  FlowDivider flowDivider;
   std::vector<Measurement> values; ///< in the order of the file comment
   std::array<DiameterProfile, 3> profiles;
   std::vector<std::string> warnings;

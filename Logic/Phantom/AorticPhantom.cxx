@@ -90,6 +90,9 @@ void ValidatePhantomParams(const PhantomParams& p)
   check("renalDivisionMm", p.renalDivisionMm, 0, 40, "mm");
   check("accessoryRenalOffsetMm", p.accessoryRenalOffsetMm, -40, 40, "mm");
   check("commonIliacKinkDeg", p.commonIliacKinkDeg, 0, 60, "degrees");
+  check("rightCommonIliacAngleDeg", p.rightCommonIliacAngleDeg, 10, 60, "degrees");
+  check("leftCommonIliacAngleDeg", p.leftCommonIliacAngleDeg, 10, 60, "degrees");
+  check("distalNeckLengthMm", p.distalNeckLengthMm, 0, 40, "mm");
   check("rightIliacDecoyBranchMm", p.rightIliacDecoyBranchMm, 0, std::max(0.0, p.rightCommonIliacLengthMm - 15.0),
         "mm");
   if (p.accessoryRenalOffsetMm != 0.0 && std::abs(p.accessoryRenalOffsetMm) < 8.0)

@@ -18,7 +18,8 @@
 ///    wall lies exactly at the site: 3 mm above it on a vertical neck, more on a leaning one
 ///    (β > 0), where the horizontal renal leaves the neck's axis obliquely (+1.2 mm at β = 60°).
 ///  - **superior mesenteric** and **coeliac** arteries leave anteriorly (−y) above the renals.
-///  - **common iliacs** leave the bifurcation 25° from the midline, `rightCommonIliacLengthMm` /
+///  - **common iliacs** leave the bifurcation 25° from the midline (`rightCommonIliacAngleDeg`,
+///    `leftCommonIliacAngleDeg`), `rightCommonIliacLengthMm` /
 ///    `leftCommonIliacLengthMm` long (55 mm by default), then split into **external** (continuing
 ///    caudally) and **internal** iliacs (posterior and lateral).
 ///  - optional **vertebral column** behind the aorta (cortical shell 2 mm at 1100 HU around
@@ -153,6 +154,13 @@ struct PhantomParams
   /// Each common iliac bends outward (laterally, in its frontal plane) by this 10 mm below the
   /// aortic bifurcation — a kinked start; its length along the axis is kept; [0, 60].
   double commonIliacKinkDeg = 0.0;
+  /// Each common iliac's angle from the midline (in the frontal plane), degrees; [10, 60]. Unequal
+  /// angles make a bifurcation that is not a symmetric Y (issue 46 item 7).
+  double rightCommonIliacAngleDeg = 25.0;
+  double leftCommonIliacAngleDeg = 25.0;
+  /// The sac's bottom above the aortic bifurcation, mm; [0, 40]. 0: the sac narrows straight into
+  /// the bifurcation, and with a wide distalNeckDiameterMm the iliacs leave from the sac's floor.
+  double distalNeckLengthMm = 20.0;
   bool posteriorInternalIliac = false; ///< the internal iliacs leave from the back (mostly posterior, down)
   /// A branch as wide as the internal iliac leaving the right common iliac this far below the
   /// aortic bifurcation, running out, back and a little down for 35 mm (a large iliolumbar or an
@@ -218,6 +226,15 @@ struct PhantomSizing
   double proximalSiteToBifurcationLength = 0.0;
   double rightIliacLength = 0.0; ///< aortic bifurcation to the right internal iliac origin
   double leftIliacLength = 0.0;
+  /// The flow divider (the "flowDivider" landmark): the highest point, in the common iliacs'
+  /// frontal plane between their axes, outside every lumen as drawn — where the lumen divides
+  /// (found by bisection to 1 µm on the tubes' own signed distances). Site to it along the aorta
+  /// (the aorta is vertical below the sac: the site-to-bifurcation length plus its depth below B),
+  /// and from it to each internal iliac origin along the common iliac's axis (the origin's
+  /// arc length less that of the flow divider's nearest axis point), mm.
+  double proximalSiteToFlowDividerLength = 0.0;
+  double rightIliacLengthFromFlowDivider = 0.0;
+  double leftIliacLengthFromFlowDivider = 0.0;
   double rightInternalIliacRadius = 0.0; ///< the internal iliac's lumen radius (its ostium's half width)
   double leftInternalIliacRadius = 0.0;
   /// Aortic bifurcation to the internal iliac ostium's upstream edge, along the common iliac's

@@ -186,6 +186,89 @@ void NeckBendSectionTruth(const Anatomy& anatomy,
     sizing.outerNeckDiameter15mm = sizing.neckDiameter15mm;
 }
 
+/// Arc length along `axis` (a polyline from B) of its point nearest to `x`, mm.
+double NearestArcLength(const std::vector<Point3>& axis, const Point3& x)
+{
+  double best = std::numeric_limits<double>::infinity(), arc = 0.0, start = 0.0;
+  for (std::size_t k = 0; k + 1 < axis.size(); ++k)
+  {
+    const Eigen::Vector3d ab = axis[k + 1] - axis[k];
+    const double t = std::clamp((x - axis[k]).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    const double d = (axis[k] + t * ab - x).norm();
+    if (d < best)
+    {
+      best = d;
+      arc = start + t * ab.norm();
+    }
+    start += ab.norm();
+  }
+  return arc;
+}
+
+/// The flow divider's truth (PhantomSizing): at height z below B, the lumen has divided when a
+/// point of the frontal plane between the two common iliacs' first axis pieces (extended) lies
+/// outside every lumen tube. Divided is monotone in depth below B (the iliacs diverge), so the
+/// highest such z is found by bisection to 1 nm, after a 0.25 mm descent finds the first divided
+/// level.
+void FlowDividerTruth(Anatomy& anatomy, const std::vector<Point3> (&commonAxes)[2])
+{
+  PhantomSizing& sizing = anatomy.truth.sizing;
+  sizing.proximalSiteToFlowDividerLength = sizing.rightIliacLengthFromFlowDivider =
+    sizing.leftIliacLengthFromFlowDivider = std::numeric_limits<double>::quiet_NaN();
+  std::vector<TubeDistance> lumens(anatomy.tubes.begin(), anatomy.tubes.end());
+  const Eigen::Vector3d first[2] = { (commonAxes[0][1] - commonAxes[0][0]).normalized(),
+                                     (commonAxes[1][1] - commonAxes[1][0]).normalized() };
+  // At height z, the point between the axes farthest outside every lumen (0.05 mm samples, then a
+  // ternary search around the best to 1e-7 mm) and how far outside it lies (> 0: divided there).
+  const auto outside = [&](double x, double z)
+  {
+    double least = std::numeric_limits<double>::infinity();
+    for (TubeDistance& t : lumens)
+      least = std::min(least, t.SignedDistance(Point3(x, 0.0, z)));
+    return least;
+  };
+  const auto gapAt = [&](double z)
+  {
+    const double xRight = z / first[0].z() * first[0].x(), xLeft = z / first[1].z() * first[1].x();
+    double best = xRight, bestValue = -std::numeric_limits<double>::infinity();
+    for (double x = xRight; x <= xLeft; x += 0.05)
+      if (const double v = outside(x, z); v > bestValue)
+      {
+        bestValue = v;
+        best = x;
+      }
+    double lo = std::max(xRight, best - 0.05), hi = std::min(xLeft, best + 0.05);
+    while (hi - lo > 1e-7)
+    {
+      const double a = lo + (hi - lo) / 3.0, b = hi - (hi - lo) / 3.0;
+      if (outside(a, z) < outside(b, z))
+        lo = a;
+      else
+        hi = b;
+    }
+    const double x = 0.5 * (lo + hi);
+    return std::make_pair(Point3(x, 0.0, z), outside(x, z));
+  };
+  double above = 0.0, below = -0.25;
+  while (gapAt(below).second <= 0.0)
+  {
+    above = below;
+    below -= 0.25;
+    if (below < -80.0)
+      return; // no division in reach: the truth's flow-divider values stay NaN
+  }
+  while (above - below > 1e-6)
+  {
+    const double mid = 0.5 * (above + below);
+    (gapAt(mid).second <= 0.0 ? above : below) = mid;
+  }
+  const Point3 divider = gapAt(below).first;
+  anatomy.truth.landmarks.push_back({ "flowDivider", divider });
+  sizing.proximalSiteToFlowDividerLength = sizing.proximalSiteToBifurcationLength - divider.z();
+  sizing.rightIliacLengthFromFlowDivider = sizing.rightIliacLength - NearestArcLength(commonAxes[0], divider);
+  sizing.leftIliacLengthFromFlowDivider = sizing.leftIliacLength - NearestArcLength(commonAxes[1], divider);
+}
+
 } // namespace
 
 Anatomy BuildAnatomy(const PhantomParams& p)
@@ -193,7 +276,7 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   Anatomy anatomy;
   PhantomTruth& truth = anatomy.truth;
   const double rNeck = p.neckDiameterMm / 2, rDistal = p.distalNeckDiameterMm / 2;
-  const double sacBottom = distalNeckLengthMm, sacTop = sacBottom + p.aneurysmLengthMm;
+  const double sacBottom = p.distalNeckLengthMm, sacTop = sacBottom + p.aneurysmLengthMm;
   const double siteZ = sacTop + p.neckLengthMm; // lower edge of the lowest (right) renal ostium
   const double smaZ = siteZ + 20.0, coeliacZ = siteZ + 35.0, topZ = siteZ + p.aortaAboveSiteMm;
   const double amplitude = p.maxAneurysmDiameterMm / 2 - 0.5 * (rNeck + rDistal);
@@ -263,8 +346,8 @@ Anatomy BuildAnatomy(const PhantomParams& p)
                               std::max({ rNeck, rDistal, rMax }) - wallMm });
   }
 
-  const double angle = commonIliacAngleDeg * pi / 180.0;
   Point3 iliacEnd[2];
+  std::vector<Point3> commonAxes[2];
   const char* sideName[2] = { "right", "left" };
   const double iliacRadius[2] = { p.rightIliacDiameterMm / 2, p.leftIliacDiameterMm / 2 };
   const double commonIliacLengthMm[2] = { p.rightCommonIliacLengthMm, p.leftCommonIliacLengthMm };
@@ -273,6 +356,7 @@ Anatomy BuildAnatomy(const PhantomParams& p)
     const double lateral = side == 0 ? -1.0 : 1.0; // patient right is -x in LPS
     const std::string prefix = sideName[side];
     const double r = iliacRadius[side]; // outer; the lumen lies the wall's thickness inside
+    const double angle = (side == 0 ? p.rightCommonIliacAngleDeg : p.leftCommonIliacAngleDeg) * pi / 180.0;
     iliacEnd[side] = commonIliacLengthMm[side] * Point3(lateral * std::sin(angle), 0, -std::cos(angle));
     std::vector<Point3> common{ Point3::Zero(), iliacEnd[side] };
     if (p.commonIliacKinkDeg > 0.0 && commonIliacLengthMm[side] > kinkFromBifurcationMm + 5.0)
@@ -284,6 +368,7 @@ Anatomy BuildAnatomy(const PhantomParams& p)
                                 Point3(lateral * std::sin(turned), 0, -std::cos(turned));
       common = { Point3::Zero(), kink, iliacEnd[side] };
     }
+    commonAxes[side] = common;
     const std::vector<Point3> external{ iliacEnd[side], iliacEnd[side] + 70.0 * Unit(lateral * 0.17, -0.15, -0.97) };
     const std::vector<Point3> internal{
       iliacEnd[side], iliacEnd[side] + 40.0 * (p.posteriorInternalIliac ? Unit(lateral * 0.15, 0.85, -0.5)
@@ -435,6 +520,7 @@ Anatomy BuildAnatomy(const PhantomParams& p)
   sizing.rightIliacLength = p.rightCommonIliacLengthMm;
   sizing.leftIliacLength = p.leftCommonIliacLengthMm;
   sizing.neckAngleBetaDeg = p.neckAngleDeg;
+  FlowDividerTruth(anatomy, commonAxes);
   // On the aneurysm lumen's axis at mid-sac (off the vessel's axis where there is a thrombus).
   const double seedH = 0.5 * (sacTop + sacBottom);
   truth.seedLps = wall ? wall->LumenCentreLps(seedH) : Point3(0, 0, seedH);

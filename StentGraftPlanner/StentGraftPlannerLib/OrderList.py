@@ -198,7 +198,8 @@ def anatomyLines(report, values=None):
     """The anatomy's lengths the order list was chosen from, along the centerlines, as (kind, text).
 
     From the report's deployment.anatomy, measured from the main body's proximal edge: to the aortic
-    bifurcation and to each internal iliac origin (the common iliac between them). Without it, from
+    bifurcation, to the flow divider where it was found, and to each internal iliac origin (the common
+    iliac between B and it). Without it, from
     the return values proximalSiteToBifurcationLength, rightIliacLength and leftIliacLength (from the
     proximal site). No line when neither is there.
     """
@@ -209,6 +210,10 @@ def anatomyLines(report, values=None):
         edge = _proximalEdgeText(report, report["deployment"])
         lines.append(("heading", "Anatomy, from the proximal edge" + (" (%s)" % edge if edge else "")))
         lines.append(("text", "→ aortic bifurcation %s" % _mm(toBifurcation)))
+        toDivider = _toFloat(anatomy.get("targetToFlowDividerMm"))
+        if toDivider is not None:
+            lines.append(("text", "→ flow divider %s (where the lumen divides; the limbs' seal is measured from it)"
+                          % _mm(toDivider)))
         for side in ("right", "left"):
             toIliac = _toFloat(anatomy.get("targetTo%sInternalIliacMm" % side.capitalize()))
             common = " (common iliac %s)" % _mm(toIliac - toBifurcation) if toIliac is not None else ""

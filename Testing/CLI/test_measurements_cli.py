@@ -51,15 +51,20 @@ OUTER_TRUTH = {name: "outer" + name[0].upper() + name[1:] for name in DIAMETERS}
 LUMEN = {name: name.replace("Diameter", "LumenDiameter") for name in DIAMETERS}
 WALL_VALUES = ["thrombusVolume", "sacVolume", "maxThrombusThickness", "neckThrombusArc", "neckCalcificationArc"]
 THROMBUS_FRACTION = 0.10  # issue 12's bar for the thrombus volume
-LENGTHS = ["proximalNeckLength", "proximalSiteToBifurcationLength", "rightIliacLength", "leftIliacLength"]
+LENGTHS = ["proximalNeckLength", "proximalSiteToBifurcationLength", "rightIliacLength", "leftIliacLength",
+           "proximalSiteToFlowDividerLength", "rightIliacLengthFromFlowDivider", "leftIliacLengthFromFlowDivider"]
 OTHERS = ["neckAngleBeta", "neckAngleAlpha", "neckConicity", "rightIliacTortuosity", "leftIliacTortuosity",
           "rightAccessMinDiameter", "leftAccessMinDiameter"]
 DIAMETER_MM = 1.0  # issue 5's bar on 0.8 x 0.8 x 1.0 mm voxels
 # Lengths at their real accuracy on the phantoms (MeasureAnatomyTest.cxx gives the measured
 # spread): the neck length within its stated uncertainty (NeckLengthUncertaintyMm), site to
 # bifurcation 1.5 mm, bifurcation to the internal iliac origins 1.5 mm.
+# From the flow divider: the same bars plus the divider's height, half the 1 mm slice + 0.5 mm
+# (FlowDividerPlanTest; measured 0.1-0.9 mm on 1 mm slices).
 LENGTH_MM = {"proximalNeckLength": 2.0, "proximalSiteToBifurcationLength": 1.5, "rightIliacLength": 1.5,
-             "leftIliacLength": 1.5}
+             "leftIliacLength": 1.5, "proximalSiteToFlowDividerLength": 2.5, "rightIliacLengthFromFlowDivider": 2.5,
+             "leftIliacLengthFromFlowDivider": 2.5}
+SITE_LENGTHS = ("proximalNeckLength", "proximalSiteToBifurcationLength", "proximalSiteToFlowDividerLength")
 LANDMARK_MM = 1.0  # where the axes meet, against the analytic branching points (MeasureAnatomyTest)
 SAME_MM = 1e-3     # run C (RAS-stored copy of the same voxels) against run A
 ANGLE_DEG = 5.0    # issue 5's bar for beta
@@ -115,7 +120,7 @@ def check_run(label, returned, files, truth, expect_source, shift_mm):
         check(abs(values["thrombusVolume"] - sizing["thrombusVolumeMl"]) <= THROMBUS_FRACTION * sizing["thrombusVolumeMl"],
               f"{label}: thrombusVolume within 10 %", f"{values['thrombusVolume']:.2f} vs {sizing['thrombusVolumeMl']:.2f}")
     for name in LENGTHS:
-        expected = sizing[name] - (shift_mm if name in ("proximalNeckLength", "proximalSiteToBifurcationLength") else 0)
+        expected = sizing[name] - (shift_mm if name in SITE_LENGTHS else 0)
         if name in values:
             check(abs(values[name] - expected) <= LENGTH_MM[name], f"{label}: {name} within {LENGTH_MM[name]} mm",
                   f"{values[name]:.2f} vs {expected:.2f}")

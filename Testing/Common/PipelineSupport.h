@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "Centerlines/FlowDivider.h"
 #include "Centerlines/AssignInscribedRadii.h"
 #include "Centerlines/LabelAortoIliacTree.h"
 #include "Centerlines/ThinLabelMap.h"
@@ -34,6 +35,7 @@ inline CenterlineTree CenterlinesFromMask(const LabelImage& mask)
   const Skeleton skeleton = ThinLabelMap(mask);
   CenterlineTree tree = LabelAortoIliacTree(BuildSkeletonGraph(skeleton, mask));
   AssignInscribedRadii(tree, skeleton);
+  LocateFlowDivider(mask, tree); // as the plan's centerline stage does
   return tree;
 }
 
@@ -74,7 +76,8 @@ inline void FitAndMeasure(MeasuredPlan& plan,
     wallParams.calciumHu = std::min(calciumHu, wallParams.calciumHu);
     plan.vesselWall = TraceVesselWall(*ct, *plan.lumen, plan.tree, plan.site.abscissaMm, wallParams);
   }
-  plan.measurements = MeasureAnatomy(plan.tree, plan.mesh, plan.fit.V, plan.site, ct ? &plan.vesselWall : nullptr);
+  plan.measurements = MeasureAnatomy(plan.tree, plan.mesh, plan.fit.V, plan.site, ct ? &plan.vesselWall : nullptr,
+                                     plan.lumen.GetPointer());
 }
 
 /// Segmentation, centerlines, proximal site, stent mesh from the site, measure-mode fit, outer

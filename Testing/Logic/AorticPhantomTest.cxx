@@ -90,6 +90,78 @@ TEST(AorticPhantom, SizingTruth_FromTheRadiusProfile)
   EXPECT_NEAR(2 * aorta.radiusMm.maxCoeff(), s.maxAneurysmDiameter, 0.02); // 1 mm samples near the top
 }
 
+/// The flow divider where two straight iliac lumens of radius r part: in their frontal plane,
+/// the point r from both axes between them — the meeting point of the axes' inner parallels,
+/// solved here from the angles (x_side = s·sin θ_side outward, z = −s·cos θ_side).
+Point3 ParallelsMeet(double rightDeg, double leftDeg, double r)
+{
+  const double a = rightDeg * M_PI / 180.0, b = leftDeg * M_PI / 180.0;
+  // Inner normals (toward the midline) n_right = (cos a, −sin a), n_left = (−cos b, −sin b) in
+  // (x, z); the point p with p·n_side = r for both.
+  Eigen::Matrix2d n;
+  n << std::cos(a), -std::sin(a), -std::cos(b), -std::sin(b);
+  const Eigen::Vector2d xz = n.fullPivLu().solve(Eigen::Vector2d(r, r));
+  return Point3(xz(0), 0.0, xz(1));
+}
+
+struct DividerCase
+{
+  const char* name;
+  double rightDeg, leftDeg, distalNeckDiameterMm;
+};
+
+class FlowDividerTruth : public ::testing::TestWithParam<DividerCase>
+{
+};
+
+TEST_P(FlowDividerTruth, WhereTheIliacLumensPart)
+{
+  const DividerCase c = GetParam();
+  PhantomParams p;
+  p.spacingMm = { 2.0, 2.0, 2.0 }; // the truth does not depend on the grid
+  p.noiseSigmaHu = 0.0;
+  p.rightCommonIliacAngleDeg = c.rightDeg;
+  p.leftCommonIliacAngleDeg = c.leftDeg;
+  p.distalNeckDiameterMm = c.distalNeckDiameterMm;
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  const PhantomSizing& s = phantom.truth.sizing;
+  const Point3 divider = Landmark(phantom, "flowDivider");
+  const double r = 6.0; // the 12 mm iliacs' lumen radius
+  const Point3 expected = ParallelsMeet(c.rightDeg, c.leftDeg, r);
+  const double capsule = c.distalNeckDiameterMm / 2; // the aorta's round end around B
+  if (expected.norm() > capsule)
+  {
+    // The bisection stops within 1 nm in z; x is searched to 1e-7 mm (10 µm: about the flat
+    // maximum's spread at the apex, where both tubes are equally far).
+    EXPECT_NEAR(divider.z(), expected.z(), 1e-5);
+    EXPECT_NEAR(divider.x(), expected.x(), 0.01);
+  }
+  else
+  {
+    // Below the aorta's round end: on the sphere of its radius around B, outside both iliacs.
+    EXPECT_NEAR(divider.norm(), capsule, 1e-5);
+    EXPECT_LT(divider.z(), expected.z());
+  }
+  EXPECT_DOUBLE_EQ(divider.y(), 0.0);
+  EXPECT_NEAR(s.proximalSiteToFlowDividerLength - s.proximalSiteToBifurcationLength, -divider.z(), 1e-12);
+  // From the divider to the internal iliac origin: the iliac's length less the divider's
+  // projection on its (straight) axis.
+  const double angles[2] = { c.rightDeg * M_PI / 180.0, c.leftDeg * M_PI / 180.0 };
+  const double lengths[2] = { s.rightIliacLengthFromFlowDivider, s.leftIliacLengthFromFlowDivider };
+  for (int side = 0; side < 2; ++side)
+  {
+    const Point3 axis((side == 0 ? -1.0 : 1.0) * std::sin(angles[side]), 0.0, -std::cos(angles[side]));
+    EXPECT_NEAR(lengths[side], 55.0 - divider.dot(axis), 1e-9) << side;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AorticPhantom,
+                         FlowDividerTruth,
+                         ::testing::Values(DividerCase{ "SymmetricY", 25.0, 25.0, 18.0 },
+                                           DividerCase{ "UnequalAngles", 15.0, 40.0, 18.0 },
+                                           DividerCase{ "WideDistalAorta", 25.0, 25.0, 30.0 }),
+                         [](const auto& info) { return std::string(info.param.name); });
+
 TEST(AorticPhantom, NeckAngle_NeckAxisLeansAnteriorlyByBeta)
 {
   PhantomParams p;

@@ -216,7 +216,18 @@ TEST_P(ConfiguredPhantom, LimbsLandAboveTheTrueInternalIliacOstium)
   const DeviceConfiguration* c = plan.Configuration();
   ASSERT_NE(c, nullptr) << plan.selection.summary;
   ASSERT_TRUE(c->configured) << c->unknownReason;
-  EXPECT_TRUE(c->findings.empty()) << c->findings.front().text;
+  // A 20 mm common iliac holds 4.5–5.1 mm below the flow divider (it lies 10.6 mm below B on
+  // these 12 mm iliacs at 25°; 2 mm of mouth and the ostium's radius above the origin): too short
+  // for Endurant's 15 mm seal on both sides, and said so — the seal is measured from where the
+  // iliac lumens part, not from B. The others: no finding.
+  if (cia <= 20.0)
+  {
+    ASSERT_EQ(c->findings.size(), 2u);
+    for (const ConfigurationFinding& f : c->findings)
+      EXPECT_EQ(f.constraint, "commonIliacTooShort") << f.text;
+  }
+  else
+    EXPECT_TRUE(c->findings.empty()) << c->findings.front().text;
   const DeviceFamily& family = *FindDeviceFamily(testing::ShippedPlanParams().catalog, c->family);
   const Point3 B = TruthLandmark(phantom, "aorticBifurcation");
   for (int side = 0; side < 2; ++side)
@@ -269,11 +280,12 @@ TEST_P(ConfiguredPhantom, LimbsLandAboveTheTrueInternalIliacOstium)
   }
   ExpectDeployedAsPlanned(plan);
   // The simulated seal in a 20 mm common iliac: the first few mm below the bifurcation lie where
-  // the two iliac lumens merge, wider than a limb, so the sealed length is shorter than the
-  // planned (bifurcation to edge) and below Endurant's 15 mm: a type Ib finding, which must then
-  // be the only kind.
+  // the two iliac lumens merge, wider than a limb, so the sealed length is below Endurant's 15 mm:
+  // a type Ib finding, beside the configuration's short common iliacs — the only kinds.
   for (const std::string& f : plan.fitCheck.findings)
-    EXPECT_TRUE(cia <= 20.0 && f.find("type Ib") != std::string::npos) << f;
+    EXPECT_TRUE(cia <= 20.0 &&
+                (f.find("type Ib") != std::string::npos || f.find("common iliac too short") != std::string::npos))
+      << f;
 }
 
 INSTANTIATE_TEST_SUITE_P(Deployment,

@@ -302,14 +302,16 @@ TEST(GivenLandmarks, EachMovesOnlyTheValuesThatHangFromIt)
   left.landmarks.internalIliacOriginLps[1] = PositionAt(leftIliac, s + 8.0);
   const RepairPlan moved = Plan(phantom, left);
   EXPECT_NEAR(moved.measurements.Value("leftIliacLength") - f.Value("leftIliacLength"), 8.0, 1e-6);
-  const std::set<std::string> hangFromTheLeftOrigin = { "leftIliacLength", "leftIliacLumenDiameter",
-                                                        "leftIliacDiameter", "leftIliacTortuosity",
-                                                        "leftAccessMinDiameter" };
+  const std::set<std::string> hangFromTheLeftOrigin = { "leftIliacLength",        "leftIliacLengthFromFlowDivider",
+                                                        "leftIliacLumenDiameter", "leftIliacDiameter",
+                                                        "leftIliacTortuosity",    "leftAccessMinDiameter" };
   const std::set<std::string> changedLeft = ChangedMeasurements(found, moved, 1e-9);
   std::cout << "changed with the left origin:" << Join(changedLeft) << std::endl;
   for (const std::string& name : changedLeft)
     EXPECT_TRUE(hangFromTheLeftOrigin.count(name)) << name << " moved with the left internal iliac origin";
   EXPECT_TRUE(changedLeft.count("leftIliacLength"));
+  EXPECT_NEAR(moved.measurements.Value("leftIliacLengthFromFlowDivider") - f.Value("leftIliacLengthFromFlowDivider"),
+              8.0, 1e-6);
 
   // The bifurcation 5 mm up the aorta from where it was found.
   PlanRequest up;
@@ -331,7 +333,8 @@ TEST(GivenLandmarks, EachMovesOnlyTheValuesThatHangFromIt)
   }
   // What hangs from B: the aortic and iliac lengths, the iliacs' tortuosity (their length from B),
   // β (the sac's axis runs down to B), (d) (read between the sac and B) and the access vessels
-  // (from B down); nothing of the neck or the landing zones' diameters.
+  // (from B down); nothing of the neck or the landing zones' diameters, nor the lengths to and from
+  // the flow divider, which is found on the lumen, not from B.
   const std::set<std::string> hangFromB = { "proximalSiteToBifurcationLength",
                                             "rightIliacLength",
                                             "leftIliacLength",

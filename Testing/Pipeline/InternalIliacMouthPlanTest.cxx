@@ -63,7 +63,7 @@ TEST_P(InternalIliacMouth, EdgeReadAtOrAboveTheMouth)
     const BranchOstium ostium = FindBranchOstium(iliac, *branch);
     ASSERT_TRUE(ostium.found);
     // Along the common iliac's last axis piece (the truth's: AorticPhantom.h), from its end.
-    const double lateral = side == 0 ? -1.0 : 1.0, angle = phantom::commonIliacAngleDeg * std::acos(-1.0) / 180.0;
+    const double lateral = side == 0 ? -1.0 : 1.0, angle = p.rightCommonIliacAngleDeg * std::acos(-1.0) / 180.0;
     const Point3 end =
       testing::TruthLandmark(phantom.truth, side == 0 ? "rightIliacBifurcation" : "leftIliacBifurcation");
     const Point3 first = Point3(lateral * std::sin(angle), 0.0, -std::cos(angle));

@@ -154,6 +154,17 @@ class AnatomyTest(unittest.TestCase):
             ("text", "→ left internal iliac origin 180.4 mm (common iliac 53.5 mm)"),
         ])
 
+    def test_FlowDivider_BelowTheBifurcation(self):
+        def change(deployment):
+            deployment["anatomy"]["targetToFlowDividerMm"] = 137.26
+        lines = OrderList.anatomyLines(withDeployment(change))
+        self.assertEqual(lines[1:3], [
+            ("text", "→ aortic bifurcation 126.9 mm"),
+            ("text", "→ flow divider 137.3 mm (where the lumen divides; the limbs' seal is measured from it)"),
+        ])
+        self.assertEqual(len(lines), 5)
+        self.assertNotIn("flow divider", str(OrderList.anatomyLines(report("report-deployment.json"))))
+
     def test_InternalIliacNotFound_IsNotMeasured(self):
         lines = OrderList.anatomyLines(report("report-not-configured.json"))
         self.assertEqual(lines[0], ("heading", "Anatomy, from the proximal edge (5.0 mm below the lower edge of the "
