@@ -70,11 +70,6 @@ struct CenterlineTree
   /// The scan's extent along LPS z (its voxel centres' lowest and highest z, mm); NaN: not known.
   double scanLowestZMm = std::numeric_limits<double>::quiet_NaN();
   double scanHighestZMm = std::numeric_limits<double>::quiet_NaN();
-  /// Per iliac (0 right, 1 left): the flow divider's projection on its centerline (FlowDivider.h),
-  /// mm along it; NaN: not located (no lumen mask, or not found). B's iliac axes start there
-  /// (VesselOrigins.h).
-  std::array<double, 2> flowDividerIliacAbscissaMm{ std::numeric_limits<double>::quiet_NaN(),
-                                                    std::numeric_limits<double>::quiet_NaN() };
   /// The scan's coarsest voxel spacing, mm; NaN: not known.
   double largestSpacingMm = std::numeric_limits<double>::quiet_NaN();
   /// Landmarks a person gave (GivenLandmarks.h), which replace the ones found: the aortic

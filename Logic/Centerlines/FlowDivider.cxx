@@ -174,13 +174,6 @@ FlowDivider FindFlowDivider(const LabelImage& lumen, const CenterlineTree& tree)
   return out;
 }
 
-void LocateFlowDivider(const LabelImage& lumen, CenterlineTree& tree)
-{
-  const FlowDivider divider = FindFlowDivider(lumen, tree);
-  if (divider.found)
-    tree.flowDividerIliacAbscissaMm = divider.iliacAbscissaMm;
-}
-
 double FlowDivider::DepthBelowMm(const Point3& bifurcationLps) const
 {
   return found ? (lps - bifurcationLps).dot(aorticDirection) : std::numeric_limits<double>::quiet_NaN();

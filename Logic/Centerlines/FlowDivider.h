@@ -56,8 +56,4 @@ struct FlowDivider
 
 FlowDivider FindFlowDivider(const LabelImage& lumen, const CenterlineTree& tree);
 
-/// Sets `tree.flowDividerIliacAbscissaMm` from FindFlowDivider (left NaN when not found), so that
-/// B's iliac axes start there (VesselOrigins.h); the plan's centerline stage calls it.
-void LocateFlowDivider(const LabelImage& lumen, CenterlineTree& tree);
-
 } // namespace sgp

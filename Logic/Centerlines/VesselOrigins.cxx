@@ -106,12 +106,7 @@ std::vector<Line> BifurcationAxes(const CenterlineTree& tree)
     const double origin = FoundInternalIliacOriginAbscissa(tree, side);
     const double end = std::isfinite(origin) ? std::min(BifurcationIliacReachMm, origin - 5.0)
                                              : std::min(BifurcationIliacReachMm, iliac.LengthMm());
-    // Not above the flow divider: above it the skeleton runs in the cross-section both iliacs
-    // share, toward its middle (on a 30 mm distal aorta on 2.5 mm slices, chords from 10 mm met
-    // 2.7 mm above B).
-    const double divider = tree.flowDividerIliacAbscissaMm[std::size_t(side)];
-    const double from =
-      std::max(std::min(10.0, 0.5 * end), std::isfinite(divider) ? std::min(divider, end - 10.0) : 0.0);
+    const double from = std::min(10.0, 0.5 * end);
     if ((PositionAt(iliac, end) - PositionAt(iliac, from)).norm() > 1.0)
       axes.push_back(Chord(iliac, from, end));
   }

@@ -9,7 +9,6 @@
 #include <optional>
 #include <utility>
 
-#include "Centerlines/FlowDivider.h"
 #include "Centerlines/AssignInscribedRadii.h"
 #include "Centerlines/ThinLabelMap.h"
 #include "Common/Errors.h"
@@ -120,7 +119,6 @@ void ExtractCenterlines(const PlanRequest& request,
                      " Expected the aorta and both common iliac arteries in the labels chosen (lumenLabels).");
   }
   AssignInscribedRadii(plan.centerlines, skeleton);
-  LocateFlowDivider(*plan.lumen.mask, plan.centerlines);
   ApplyGivenLandmarks(plan.centerlines, request.landmarks);
 }
 

@@ -10,7 +10,6 @@
 
 #include <gtest/gtest.h>
 
-#include "Centerlines/FlowDivider.h"
 #include "Centerlines/AssignInscribedRadii.h"
 #include "Centerlines/LabelAortoIliacTree.h"
 #include "Centerlines/ThinLabelMap.h"
@@ -35,7 +34,6 @@ inline CenterlineTree CenterlinesFromMask(const LabelImage& mask)
   const Skeleton skeleton = ThinLabelMap(mask);
   CenterlineTree tree = LabelAortoIliacTree(BuildSkeletonGraph(skeleton, mask));
   AssignInscribedRadii(tree, skeleton);
-  LocateFlowDivider(mask, tree); // as the plan's centerline stage does
   return tree;
 }
 
