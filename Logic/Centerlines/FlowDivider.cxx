@@ -4,6 +4,8 @@
 #include <cmath>
 #include <optional>
 
+#include "Common/SmoothMask.h"
+
 namespace sgp
 {
 namespace
@@ -11,55 +13,6 @@ namespace
 
 constexpr double levelStepMm = 0.25, sampleStepMm = 0.2, reachMm = 60.0, refinedMm = 0.01;
 constexpr double persistMm[2] = { 1.0, 2.0 }; ///< the gap must still show this far lower
-
-/// The lumen mask interpolated trilinearly (1 lumen, 0 not; 0 outside the image).
-class MaskSampler
-{
-public:
-  explicit MaskSampler(const LabelImage& mask)
-    : m_Mask(mask)
-    , m_Size(mask.GetLargestPossibleRegion().GetSize())
-    , m_Start(mask.GetLargestPossibleRegion().GetIndex())
-  {
-  }
-
-  double operator()(const Point3& lps) const
-  {
-    LabelImage::PointType point;
-    for (unsigned a = 0; a < 3; ++a)
-      point[a] = lps[a];
-    const auto index = m_Mask.TransformPhysicalPointToContinuousIndex<double>(point);
-    long base[3];
-    double frac[3];
-    for (unsigned a = 0; a < 3; ++a)
-    {
-      base[a] = long(std::floor(index[a]));
-      frac[a] = index[a] - double(base[a]);
-    }
-    double value = 0.0;
-    for (int corner = 0; corner < 8; ++corner)
-    {
-      LabelImage::IndexType voxel;
-      double weight = 1.0;
-      bool inside = true;
-      for (unsigned a = 0; a < 3; ++a)
-      {
-        const int up = (corner >> a) & 1;
-        voxel[a] = base[a] + up;
-        weight *= up ? frac[a] : 1.0 - frac[a];
-        inside = inside && voxel[a] >= m_Start[a] && voxel[a] < m_Start[a] + long(m_Size[a]);
-      }
-      if (inside && weight > 0.0 && m_Mask.GetPixel(voxel) != 0)
-        value += weight;
-    }
-    return value;
-  }
-
-private:
-  const LabelImage& m_Mask;
-  LabelImage::SizeType m_Size;
-  LabelImage::IndexType m_Start;
-};
 
 /// Where `iliac` first reaches depth t below `origin` along d; none when it starts below that depth or
 /// never reaches it.
@@ -85,7 +38,7 @@ struct Level
   Point3 gap = Point3::Zero();
 };
 
-Level LookAt(const MaskSampler& mask,
+Level LookAt(const SmoothMask& mask,
              const CenterlineTree& tree,
              const Point3& origin,
              const Eigen::Vector3d& d,
@@ -130,13 +83,12 @@ FlowDivider FindFlowDivider(const LabelImage& lumen, const CenterlineTree& tree)
   if (d.norm() < 1e-6)
     d = TangentAt(aorta, end);
   d.normalize();
-  const MaskSampler mask(lumen);
+  const SmoothMask mask(lumen);
   const auto firstDepth = [&](const Centerline& c) { return (Point3(c.points.row(0).transpose()) - origin).dot(d); };
   const double top = std::max({ firstDepth(tree.rightIliac), firstDepth(tree.leftIliac), 0.0 });
-  const auto dividedFrom = [&](double t)
+  const auto persists = [&](double t)
   {
-    const Level level = LookAt(mask, tree, origin, d, t);
-    return level.divided && LookAt(mask, tree, origin, d, t + persistMm[0]).divided &&
+    return LookAt(mask, tree, origin, d, t + persistMm[0]).divided &&
            LookAt(mask, tree, origin, d, t + persistMm[1]).divided;
   };
   if (LookAt(mask, tree, origin, d, top).divided)
@@ -145,9 +97,10 @@ FlowDivider FindFlowDivider(const LabelImage& lumen, const CenterlineTree& tree)
     return out;
   }
   double above = top, below = top + levelStepMm;
-  while (!dividedFrom(below))
+  for (Level level = LookAt(mask, tree, origin, d, below); !(level.divided && persists(below));
+       level = LookAt(mask, tree, origin, d, below))
   {
-    if (!LookAt(mask, tree, origin, d, below).reached || below > top + reachMm)
+    if (!level.reached || below > top + reachMm)
     {
       out.reason = "the lumen does not divide within " + std::to_string(int(reachMm)) +
                    " mm below where both iliac centerlines begin";

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "Common/PlaneDiameters.h"
+#include "Common/SmoothMask.h"
 
 namespace sgp
 {
@@ -34,58 +35,6 @@ double BoundaryDistance(const LabelImage& lumen, const Point3& centre, const Eig
     r += stepMm;
   return r;
 }
-
-/// The lumen mask interpolated trilinearly at an LPS point (0 outside the image).
-class SmoothMask
-{
-public:
-  explicit SmoothMask(const LabelImage& lumen)
-    : m_Lumen(lumen)
-  {
-    const auto& d = lumen.GetDirection();
-    const auto& sp = lumen.GetSpacing();
-    const auto& o = lumen.GetOrigin();
-    Eigen::Matrix3d m;
-    for (unsigned r = 0; r < 3; ++r)
-    {
-      for (unsigned c = 0; c < 3; ++c)
-        m(r, c) = d[r][c] * sp[c];
-      m_Origin[r] = o[r];
-    }
-    m_ToIndex = m.inverse();
-    const auto size = lumen.GetLargestPossibleRegion().GetSize();
-    for (unsigned a = 0; a < 3; ++a)
-      m_Size[a] = static_cast<long>(size[a]);
-  }
-
-  double operator()(const Point3& lps) const
-  {
-    const Eigen::Vector3d f = m_ToIndex * (lps - m_Origin);
-    const long i0 = static_cast<long>(std::floor(f.x())), j0 = static_cast<long>(std::floor(f.y())),
-               k0 = static_cast<long>(std::floor(f.z()));
-    const double wx = f.x() - double(i0), wy = f.y() - double(j0), wz = f.z() - double(k0);
-    double value = 0.0;
-    for (int dk = 0; dk < 2; ++dk)
-      for (int dj = 0; dj < 2; ++dj)
-        for (int di = 0; di < 2; ++di)
-        {
-          const long i = i0 + di, j = j0 + dj, k = k0 + dk;
-          if (i < 0 || j < 0 || k < 0 || i >= m_Size[0] || j >= m_Size[1] || k >= m_Size[2])
-            continue;
-          LabelImage::IndexType index{ { i, j, k } };
-          if (m_Lumen.GetPixel(index) == 0)
-            continue;
-          value += (di ? wx : 1.0 - wx) * (dj ? wy : 1.0 - wy) * (dk ? wz : 1.0 - wz);
-        }
-    return value;
-  }
-
-private:
-  const LabelImage& m_Lumen;
-  Eigen::Matrix3d m_ToIndex;
-  Eigen::Vector3d m_Origin;
-  long m_Size[3] = { 0, 0, 0 };
-};
 
 /// Distance from `centre` along unit `e` to where the smooth mask first falls below 0.5.
 double SmoothBoundaryDistance(const SmoothMask& mask, const Point3& centre, const Eigen::Vector3d& e)
