@@ -16,6 +16,7 @@
 #include "IO/ReadNeckRules.h"
 #include "LargePhantom.h"
 #include "Pipeline/PlanRepair.h"
+#include "Pipeline/PlanTolerance.h"
 #include "Stent/WallDistanceField.h"
 
 namespace
@@ -50,18 +51,26 @@ const Prepared& ConfiguredLargePlan()
   return prepared;
 }
 
+/// The fit check's context as PlanRepair's SimulateGraft stage fills it.
+sgp::FitCheckContext FitContext(const Prepared& p)
+{
+  const sgp::RepairPlan& plan = p.plan;
+  const sgp::FamilyEvaluation& family = plan.selection.families[std::size_t(plan.orderedFamily)];
+  const sgp::DeviceFamily& catalogued = p.params.catalog.families[std::size_t(family.catalogIndex)];
+  sgp::FitCheckContext context;
+  context.family = family.family;
+  context.minimumIliacSealMm = catalogued.ifu.iliacSealLengthMm.min;
+  context.minimumOverlapMm = catalogued.junctions.overlapMm.min;
+  context.configurationFindings = plan.Configuration()->findings;
+  return context;
+}
+
 void BM_DeployGraft_512x512x400(benchmark::State& state)
 {
   const Prepared& p = ConfiguredLargePlan();
   const sgp::RepairPlan& plan = p.plan;
   const sgp::DeviceConfiguration& configuration = *plan.Configuration();
-  const sgp::FamilyEvaluation& family = plan.selection.families[std::size_t(plan.orderedFamily)];
-  const sgp::DeviceFamily& catalogued = p.params.catalog.families[std::size_t(family.catalogIndex)];
-  sgp::FitCheckContext context; // as PlanRepair's SimulateGraft stage fills it
-  context.family = family.family;
-  context.minimumIliacSealMm = catalogued.ifu.iliacSealLengthMm.min;
-  context.minimumOverlapMm = catalogued.junctions.overlapMm.min;
-  context.configurationFindings = configuration.findings;
+  const sgp::FitCheckContext context = FitContext(p);
   std::size_t vertices = 0;
   bool covered = false;
   for (auto _ : state)
@@ -81,6 +90,27 @@ void BM_DeployGraft_512x512x400(benchmark::State& state)
   state.counters["measureFieldReused"] = covered ? 1.0 : 0.0;
 }
 
+// Issue 47: on top of the deployment, the tolerance analysis (PlanTolerance.h: each component
+// displaced up and down until the fit check fails, one fit per displacement): ≤ 0.5 s.
+void BM_DeploymentTolerance_512x512x400(benchmark::State& state)
+{
+  const Prepared& p = ConfiguredLargePlan();
+  const sgp::RepairPlan& plan = p.plan;
+  const sgp::FitCheckContext context = FitContext(p);
+  int simulations = 0;
+  bool assessed = false;
+  for (auto _ : state)
+  {
+    const sgp::DeploymentTolerance t = sgp::AssessPlanTolerance(plan, p.params, *p.measureWall, context);
+    simulations = t.simulations;
+    assessed = t.assessed;
+  }
+  if (!assessed)
+    state.SkipWithError("the benchmark phantom's planned graft does not pass: no tolerance to assess");
+  state.counters["simulations"] = double(simulations);
+}
+
 } // namespace
 
 BENCHMARK(BM_DeployGraft_512x512x400)->Unit(benchmark::kMillisecond)->MinTime(3.0)->UseRealTime();
+BENCHMARK(BM_DeploymentTolerance_512x512x400)->Unit(benchmark::kMillisecond)->MinTime(3.0)->UseRealTime();

@@ -50,6 +50,8 @@ def main():
                "BM_VisualReport": ("Visual report (straightened views, cross-sections, PNG, HTML), 512x512x400", 0.5),
                "BM_DeployGraft": ("Deployment simulation (the ordered configuration laid out, deployed with its rings "
                                   "in their planes, fit check on healthy wall), 512x512x400 with a wall", 0.5),
+               "BM_DeploymentTolerance": ("Deployment tolerance (each component displaced up and down, one fit and "
+                                          "fit check per displacement), 512x512x400 with a wall", 0.5),
                "BM_StraightenedVolumes": ("Both straightened volumes (80 x 80 mm, 0.7 mm voxels), 512x512x400", None),
                "BM_FactorizeSparseLDLT/624/": ("ACM: sparse LDLT of I + tau K, 624 vertices", 0.010),
                "BM_FactorizeSparseLDLT/10000/": ("ACM: sparse LDLT, 10,000 vertices", None),

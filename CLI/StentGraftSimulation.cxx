@@ -74,6 +74,7 @@ int main(int argc, char* argv[])
     params.graft = contour("simulate", { 24.0, 14.0, 14.0 }); // the graft's radii are the chosen device's
     params.selection = MakeDeviceSelectionParams(device, proximalOversizingRange, limbOversizingRange, ipsilateralSide);
     params.deploymentOffsetMm = CheckDeploymentOffset(deploymentOffsetMm);
+    params.selection.deploymentToleranceMm = CheckDeploymentTolerance(deploymentToleranceMm);
     ValidateParameters(inputVolume, seed, params.growing, params.graph, params.centerlines, params.mesh,
                        params.simulate ? *params.simulate : params.measure);
     PlanRequest request = PlanRequestFor(paths);

@@ -223,4 +223,10 @@ double CheckDeploymentOffset(double deploymentOffsetMm)
   return deploymentOffsetMm;
 }
 
+double CheckDeploymentTolerance(double deploymentToleranceMm)
+{
+  CheckRange("deploymentToleranceMm", deploymentToleranceMm, 0.0, 20.0, "mm");
+  return deploymentToleranceMm;
+}
+
 } // namespace sgp

@@ -72,6 +72,10 @@ DeviceSelectionParams MakeDeviceSelectionParams(const std::string& device,
 /// 60.0 mm." outside that range.
 double CheckDeploymentOffset(double deploymentOffsetMm);
 
+/// The deployment tolerance, mm. \throws InputError "deploymentToleranceMm is … mm; expected 0.0 to
+/// 20.0 mm." outside that range.
+double CheckDeploymentTolerance(double deploymentToleranceMm);
+
 /// Checks the text of each point argument on the command line (`--<flag> x,y,z` for every flag
 /// in `pointFlags`): three comma-separated numbers, each complete. Inside Slicer the CLI is built
 /// with SEM's GenerateCLP, which converts each component with `atof` and checks no count, so

@@ -37,4 +37,23 @@ inline std::string JoinWithCommas(const std::vector<std::string>& items)
   return list;
 }
 
+/// A camelCase identifier in words, as a person reads it: "leftInternalIliac" → "left internal
+/// iliac", "aorta" → "aorta" (ASCII letters only are split and lowered).
+inline std::string IdentifierWords(const std::string& identifier)
+{
+  std::string words;
+  for (char c : identifier)
+  {
+    if (c >= 'A' && c <= 'Z')
+    {
+      if (!words.empty())
+        words += ' ';
+      words += char(c - 'A' + 'a');
+    }
+    else
+      words += c;
+  }
+  return words;
+}
+
 } // namespace sgp

@@ -9,6 +9,7 @@
 #include "Common/Format.h"
 #include "Common/Text.h"
 #include "Device/CriterionCheck.h"
+#include "Device/LimbOptions.h"
 
 namespace sgp
 {
@@ -17,8 +18,6 @@ namespace
 
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double Infinity = std::numeric_limits<double>::infinity();
-/// Two distal edges this close land at the same place (the seal is measured to 0.1 mm).
-constexpr double SameEdgeMm = 1.0;
 /// The crotch is compared with the aorta this far above and below the flow divider
 /// (device-configuration.md §2.1: D_FD over the flow-divider level ± 10 mm).
 constexpr double CrotchLevelMm = 10.0;
@@ -36,156 +35,6 @@ const char* SideName(int side)
 std::string Mm(double value)
 {
   return FormatNumber(value) + " mm";
-}
-
-/// Where a side's limbs land, and how it went.
-enum class Landing
-{
-  InWindow = 0, ///< W_lo ≤ distal edge ≤ W_hi
-  Short = 1,    ///< below W_lo: the seal is shorter than the family's minimum
-  Covers = 2    ///< beyond W_hi: the internal iliac's ostium is covered
-};
-
-/// One way of completing a side from the gate or leg the main body ends it with.
-struct SideOption
-{
-  std::vector<ConfiguredComponent> parts; ///< limb, extension (none: the body's own leg lands)
-  std::vector<double> overlapMm;          ///< per part, its overlap in what it is inserted into
-  std::vector<double> overlapMaxMm;       ///< per part, the window's upper end
-  double distalMm = NaN;
-  Landing landing = Landing::Short;
-};
-
-/// Landing of a distal edge in [lo, hi]; `hi` NaN cannot happen here (checked before).
-Landing Classify(double distal, double lo, double hi)
-{
-  if (distal > hi + 1e-9)
-    return Landing::Covers;
-  return distal < lo - 1e-9 ? Landing::Short : Landing::InWindow;
-}
-
-/// Better for one side: in the window, then the lowest edge not past W_hi (within SameEdgeMm
-/// the fewer components), or the least covering.
-bool BetterSide(const SideOption& a, const SideOption& b)
-{
-  if (a.landing != b.landing)
-    return a.landing < b.landing;
-  if (a.landing == Landing::Covers)
-    return a.distalMm < b.distalMm - 1e-9;
-  if (std::abs(a.distalMm - b.distalMm) > SameEdgeMm)
-    return a.distalMm > b.distalMm;
-  if (a.parts.size() != b.parts.size())
-    return a.parts.size() < b.parts.size();
-  return a.distalMm > b.distalMm + 1e-9;
-}
-
-/// The overlap window [lo, hi] of a component inserted into one whose insertable stretch is
-/// `stretchMm` long; hi < lo when it cannot be inserted as deep as the family needs.
-std::pair<double, double> OverlapWindow(const IfuLimit& overlap, double stretchMm)
-{
-  const double hi = std::isnan(overlap.max) ? stretchMm : std::min(overlap.max, stretchMm);
-  return { overlap.min, hi };
-}
-
-ConfiguredComponent Place(OrderRole role, const CatalogueComponent& item, int side, double proximalMm)
-{
-  ConfiguredComponent c;
-  c.role = role;
-  c.item = item;
-  c.side = side;
-  c.proximalMm = proximalMm;
-  c.distalMm = proximalMm + item.lengthMm;
-  return c;
-}
-
-/// The ways to complete a side whose main body ends at `stubEndMm` (gate end or ipsilateral leg
-/// end) with an insertable stretch from `stubStartMm` (the flow divider): one limb, or — only
-/// when no single limb lands in the window within the length step of W_hi (the largest gap
-/// between this diameter's limb lengths) — also a limb and an extension; each as deep in what it
-/// is inserted into as the distal edge needs (never ending inside it), so that it comes as close
-/// to W_hi as the window allows.
-std::vector<SideOption> LimbOptions(const DeviceFamily& family,
-                                    OrderRole role,
-                                    int side,
-                                    double stubStartMm,
-                                    double stubEndMm,
-                                    double landingDiameterMm,
-                                    double lo,
-                                    double hi)
-{
-  const IfuLimit& overlap = family.junctions.overlapMm;
-  std::vector<SideOption> options;
-  std::vector<double> lengths;
-  for (const CatalogueComponent* limb : family.ComponentsOf(ComponentRole::Limb))
-  {
-    if (limb->distalDiameterMm != landingDiameterMm || !std::isfinite(limb->lengthMm))
-      continue;
-    lengths.push_back(limb->lengthMm);
-    // Inserted at most the stub's length, and never so deep that it ends inside the stub.
-    const auto [ovLo, ovHi] = OverlapWindow(overlap, std::min(stubEndMm - stubStartMm, limb->lengthMm - SameEdgeMm));
-    if (ovHi < ovLo)
-      continue;
-    // Distal edge = stubEnd − ov + L, ov ∈ [ovLo, ovHi]: the highest edge not past W_hi.
-    const double ov = std::clamp(stubEndMm + limb->lengthMm - hi, ovLo, ovHi);
-    SideOption o;
-    o.parts.push_back(Place(role, *limb, side, stubEndMm - ov));
-    o.overlapMm.push_back(ov);
-    o.overlapMaxMm.push_back(ovHi);
-    o.distalMm = o.parts.back().distalMm;
-    o.landing = Classify(o.distalMm, lo, hi);
-    options.push_back(o);
-  }
-  std::sort(lengths.begin(), lengths.end());
-  double lengthStep = 0.0;
-  for (std::size_t i = 1; i < lengths.size(); ++i)
-    lengthStep = std::max(lengthStep, lengths[i] - lengths[i - 1]);
-  // A single limb that lands within the length step of W_hi is as low as the catalogue's lengths
-  // allow; otherwise a limb and an extension may come lower.
-  const bool closeEnough =
-    std::any_of(options.begin(), options.end(),
-                [&](const SideOption& o) { return o.landing == Landing::InWindow && hi - o.distalMm <= lengthStep; });
-  if (closeEnough)
-    return options;
-  const std::size_t singles = options.size();
-  for (std::size_t i = 0; i < singles; ++i)
-    for (const CatalogueComponent* extension : family.ComponentsOf(ComponentRole::IliacExtension))
-    {
-      if (extension->distalDiameterMm != landingDiameterMm || !std::isfinite(extension->lengthMm))
-        continue;
-      const SideOption& single = options[i];
-      const double limbLength = single.parts[0].item.lengthMm;
-      const double ovLo = overlap.min, ovHi = single.overlapMaxMm[0];
-      // Inserted at most the limb's length, and never so deep that it ends inside the limb.
-      const auto [exLo, exHi] = OverlapWindow(overlap, std::min(limbLength, extension->lengthMm - SameEdgeMm));
-      if (exHi < exLo)
-        continue;
-      // Both overlaps as shallow as possible gives the lowest edge; deepen the limb's first, then
-      // the extension's, until the edge is not past W_hi.
-      const double deepest = stubEndMm - ovLo + limbLength - exLo + extension->lengthMm;
-      double excess = std::max(0.0, deepest - hi);
-      const double ov1 = ovLo + std::min(excess, ovHi - ovLo);
-      excess -= ov1 - ovLo;
-      const double ov2 = exLo + std::min(excess, exHi - exLo);
-      SideOption o;
-      o.parts.push_back(Place(role, single.parts[0].item, side, stubEndMm - ov1));
-      o.parts.push_back(Place(OrderRole::IliacExtension, *extension, side, o.parts[0].distalMm - ov2));
-      o.overlapMm = { ov1, ov2 };
-      o.overlapMaxMm = { ovHi, exHi };
-      o.distalMm = o.parts.back().distalMm;
-      o.landing = Classify(o.distalMm, lo, hi);
-      options.push_back(o);
-    }
-  return options;
-}
-
-/// One side's best option (`bodyAlone`, when given, is the body's own leg landing there).
-std::optional<SideOption> BestSide(std::vector<SideOption> options, const std::optional<SideOption>& bodyAlone)
-{
-  if (bodyAlone)
-    options.push_back(*bodyAlone);
-  if (options.empty())
-    return std::nullopt;
-  return *std::min_element(options.begin(), options.end(), BetterSide);
 }
 
 /// The limb diameter a side lands with: the chosen one, else — no size within the oversizing
@@ -268,9 +117,9 @@ struct Candidate
 {
   DeviceConfiguration configuration;
   /// Failed constraints, the sides' landings (0 in the window, 1 short, 2 covering, summed), the
-  /// gate's shortfall below its clearance (mm), components, the distal edges' distance from W_hi
-  /// (mm), the ipsilateral leg's mismatch with what lands in or below it (mm): lower is better.
-  std::tuple<int, int, double, std::size_t, double, double> score{ 0, 0, 0.0, 0, 0.0, 0.0 };
+  /// gate's shortfall below its clearance (mm), the narrower side's margin negated (mm), components, the distal edges'
+  /// distance from W_hi (mm), the ipsilateral leg's mismatch with what lands in or below it (mm): lower is better.
+  std::tuple<int, int, double, double, std::size_t, double, double> score{ 0, 0, 0.0, 0.0, 0, 0.0, 0.0 };
 };
 
 /// The findings of one side's landing.
@@ -321,6 +170,7 @@ std::optional<Candidate> ConfigureBody(const DeviceFamily& family,
                                        const ConfigurationAnatomy& anatomy,
                                        const DeviceConfiguration& base)
 {
+  const double tolerance = base.deploymentToleranceMm;
   Candidate candidate;
   DeviceConfiguration& c = candidate.configuration;
   c = base;
@@ -332,18 +182,15 @@ std::optional<Candidate> ConfigureBody(const DeviceFamily& family,
   std::optional<SideOption> bodyAlone;
   if (body.distalDiameterMm == landingDiameter[ipsi])
   {
-    SideOption alone;
-    alone.distalMm = body.lengthMm;
-    alone.landing = Classify(alone.distalMm, c.landingLowMm[ipsi], c.landingHighMm[ipsi]);
-    bodyAlone = alone;
+    bodyAlone = BodyLegOption(body.lengthMm, c.landingLowMm[ipsi], c.landingHighMm[ipsi], tolerance);
   }
   const std::optional<SideOption> ipsiSide =
     BestSide(LimbOptions(family, OrderRole::IpsilateralLimb, ipsi, body.flowDividerMm, body.lengthMm,
-                         landingDiameter[ipsi], c.landingLowMm[ipsi], c.landingHighMm[ipsi]),
+                         landingDiameter[ipsi], c.landingLowMm[ipsi], c.landingHighMm[ipsi], tolerance),
              bodyAlone);
   const std::optional<SideOption> contraSide =
     BestSide(LimbOptions(family, OrderRole::ContralateralLimb, contra, body.flowDividerMm, body.gateEndMm,
-                         landingDiameter[contra], c.landingLowMm[contra], c.landingHighMm[contra]),
+                         landingDiameter[contra], c.landingLowMm[contra], c.landingHighMm[contra], tolerance),
              std::nullopt);
   if (!ipsiSide || !contraSide)
     return std::nullopt;
@@ -354,6 +201,11 @@ std::optional<Candidate> ConfigureBody(const DeviceFamily& family,
     for (std::size_t k = 0; k < option->parts.size(); ++k)
     {
       c.components.push_back(option->parts[k]);
+      ConfiguredComponent& placed = c.components.back();
+      placed.holdsAboveMm = option->holds[k].aboveMm;
+      placed.holdsBelowMm = option->holds[k].belowMm;
+      placed.holdsAboveLimit = option->holds[k].aboveLimit;
+      placed.holdsBelowLimit = option->holds[k].belowLimit;
       const int inner = int(c.components.size()) - 1;
       const bool inBody = k == 0;
       const std::string what = option->parts[k].role == OrderRole::IliacExtension ? "iliac extension in the limb"
@@ -405,7 +257,13 @@ std::optional<Candidate> ConfigureBody(const DeviceFamily& family,
                                                               : (std::isfinite(ipsiSide->parts[0].item.diameterMm)
                                                                    ? ipsiSide->parts[0].item.diameterMm
                                                                    : landingDiameter[ipsi])));
-  candidate.score = { failures,   outside, gateDeficit, c.components.size(), std::round(shortfall / SameEdgeMm),
+  const double margin = std::min(ipsiSide->margin, contraSide->margin);
+  candidate.score = { failures,
+                      outside,
+                      gateDeficit,
+                      -std::round(margin * 10.0) / 10.0,
+                      c.components.size(),
+                      std::round(shortfall / SameEdgeMm),
                       legMismatch };
   return candidate;
 }
@@ -422,9 +280,11 @@ DeviceConfiguration ConfigureWithoutAlternatives(const DeviceFamily& family,
                                                  const ChosenDiameters& chosen,
                                                  const ConfigurationAnatomy& anatomy,
                                                  const SideChoice& ipsilateral,
+                                                 double toleranceMm,
                                                  std::vector<const CatalogueComponent*>& bodies)
 {
   DeviceConfiguration base;
+  base.deploymentToleranceMm = toleranceMm;
   base.family = family.name;
   base.ipsilateralSide = ipsilateral.side;
   base.ipsilateralReason = ipsilateral.reason;
@@ -524,7 +384,8 @@ void LengthAlternatives(const DeviceFamily& family,
       ConfigurationAnatomy moved = anatomy;
       moved.targetToInternalIliacMm[side] += shift;
       std::vector<const CatalogueComponent*> bodies;
-      const DeviceConfiguration other = ConfigureWithoutAlternatives(family, chosen, moved, ipsilateral, bodies);
+      const DeviceConfiguration other =
+        ConfigureWithoutAlternatives(family, chosen, moved, ipsilateral, c.deploymentToleranceMm, bodies);
       if (!other.configured)
         continue;
       for (OrderRole role : { OrderRole::IpsilateralLimb, OrderRole::ContralateralLimb, OrderRole::IliacExtension })
@@ -639,6 +500,47 @@ std::string ConfiguredComponent::OrderText() const
          (item.code.empty() ? "" : " (" + item.code + ")");
 }
 
+std::string ConfiguredComponent::RoleText() const
+{
+  switch (role)
+  {
+    case OrderRole::MainBody:
+      return "main body";
+    case OrderRole::IpsilateralLimb:
+      return std::string(SideName(side)) + " ipsilateral limb";
+    case OrderRole::ContralateralLimb:
+      return std::string(SideName(side)) + " contralateral limb";
+    case OrderRole::IliacExtension:
+      return std::string(SideName(side)) + " iliac extension";
+    case OrderRole::AorticCuff:
+      return "aortic cuff";
+  }
+  return "";
+}
+
+std::string ConfiguredComponent::HoldsText() const
+{
+  if (!std::isfinite(holdsAboveMm + holdsBelowMm))
+    return "";
+  const std::string name = SideName(side);
+  const auto limit = [&](const std::string& key, bool above)
+  {
+    if (key == "covers")
+      return "it covers the " + name + " internal iliac ostium";
+    if (key == "seal")
+      return "the " + name + " iliac seal falls under the minimum";
+    if (key == "overlap")
+      return std::string("an overlap falls under the minimum");
+    if (key == "stop")
+      return std::string(above ? "it is as deep as it goes in what it is inserted into: it cannot land higher"
+                               : "what is inserted into it is as deep as it goes: it cannot land lower");
+    return key;
+  };
+  const auto range = [](double mm) { return mm >= 0.0 ? Mm(mm) : "none (" + Mm(-mm) + " short)"; };
+  return "holds if it lands up to " + range(holdsAboveMm) + " higher (then " + limit(holdsAboveLimit, true) + ") or " +
+         range(holdsBelowMm) + " lower (then " + limit(holdsBelowLimit, false) + ")";
+}
+
 std::string DeviceConfiguration::OrderList() const
 {
   if (!configured)
@@ -660,10 +562,14 @@ const ConfiguredComponent* DeviceConfiguration::Find(OrderRole role, int side) c
 DeviceConfiguration ConfigureDevice(const DeviceFamily& family,
                                     const ChosenDiameters& chosen,
                                     const ConfigurationAnatomy& anatomy,
-                                    const SideChoice& ipsilateral)
+                                    const SideChoice& ipsilateral,
+                                    double deploymentToleranceMm)
 {
+  if (!(deploymentToleranceMm >= 0.0))
+    throw InputError("deploymentToleranceMm is " + FormatNumber(deploymentToleranceMm) + "; expected ≥ 0 mm.");
   std::vector<const CatalogueComponent*> bodies;
-  DeviceConfiguration c = ConfigureWithoutAlternatives(family, chosen, anatomy, ipsilateral, bodies);
+  DeviceConfiguration c =
+    ConfigureWithoutAlternatives(family, chosen, anatomy, ipsilateral, deploymentToleranceMm, bodies);
   if (c.configured)
     LengthAlternatives(family, chosen, anatomy, ipsilateral, c);
   return c;

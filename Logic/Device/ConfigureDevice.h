@@ -20,13 +20,15 @@
 ///    less its ostium's radius), and never past the ostium's upper edge where it was located on the
 ///    common iliac's wall (targetToInternalIliacOstiumMm: the edge the fit check judges coverage
 ///    by), so the ostium stays uncovered; and at least W_lo = L_AB + the family's
-///    minimum iliac seal; the distal edge is the highest reachable position ≤ W_hi (the longest
-///    seal); if none reaches W_lo the seal is short (a finding), and only if every option passes
-///    W_hi is the internal iliac covered (a finding);
+///    minimum iliac seal; within the window the distal edge is placed with a margin for the
+///    deployment tolerance (LimbOptions.h: where the narrowest of the part's hold ranges, capped at
+///    the tolerance, is widest, then the lowest — the longest seal; with no tolerance the highest
+///    reachable position ≤ W_hi); if none reaches W_lo the seal is short (a finding), and only if
+///    every option passes W_hi is the internal iliac covered (a finding);
 ///  - overlaps: a limb in the gate overlaps in [ov_min, min(ov_max, g − f)], a limb in the
 ///    ipsilateral leg in [ov_min, min(ov_max, T − f)], an extension in a limb in [ov_min,
 ///    min(ov_max, L_limb)] (f: the flow divider; ov_min/ov_max the family's junction figures);
-///    within that window the limb sits as deep as its distal edge needs;
+///    within that window the limb sits where its distal edge's placement needs;
 ///  - the gate: g ≤ L_AB − the family's gate clearance (the gate opens in the sac where it can be
 ///    cannulated); the crotch: the narrowest aortic lumen within ±10 mm of the flow divider at
 ///    least the body's crotch width; the limbs: where the distal aorta (d) is narrower than the
@@ -38,11 +40,13 @@
 ///  - the main body: every catalogue body of the chosen diameter (any ipsilateral-leg variant) is
 ///    tried with every way of completing both sides (the body's own leg, one limb, or a limb and one
 ///    extension); the configuration kept has the fewest failed constraints, then the fewest sides
-///    outside their window, then the lowest distal edges, then the fewest components, then the
-///    body whose ipsilateral leg is nearest the landing (or the limb's) diameter. (Precisely:
-///    failed constraints; then the sides' landings, in the window before short before covering;
-///    then the gate's shortfall below its clearance; then components; then the distal edges'
-///    distance from W_hi to the mm; then the leg's mismatch.)
+///    outside their window, then the widest margin, then the lowest distal edges, then the fewest
+///    components, then the body whose ipsilateral leg is nearest the landing (or the limb's)
+///    diameter. (Precisely: failed constraints; then the sides' landings, in the window before
+///    short before covering; then the gate's shortfall below its clearance; then the narrower
+///    side's margin (its narrowest hold range capped at the tolerance) to 0.1 mm, wider first;
+///    then components; then the distal edges' distance from W_hi to the mm; then the leg's
+///    mismatch.)
 ///
 /// **Sizes not chosen.** A side whose limb the selection could not size because the iliac is wider
 /// than the widest limb allows is planned with the widest limb (a bell-bottom limb) and a finding
@@ -60,7 +64,7 @@
 ///
 /// Input: the DeviceFamily (validated), the chosen diameters (mm; NaN where the selection chose
 /// none), the ConfigurationAnatomy (mm). Output: DeviceConfiguration. Pure, deterministic.
-/// Errors: none beyond InputError for a family index out of range: what cannot be configured is
+/// Errors: none beyond InputError for a negative (or NaN) deployment tolerance: what cannot be configured is
 /// a result (`configured` false), and what breaks a constraint is a finding.
 /// Complexity: bodies × (limbs × extensions)² per side — a few thousand combinations.
 #pragma once
@@ -166,8 +170,22 @@ struct ConfiguredComponent
   int side = 0;
   double proximalMm = 0.0; ///< along the side's path from the deployment target
   double distalMm = 0.0;
+  /// How far it may land above (toward the target) and below its planned position, displaced
+  /// alone, before a constraint of the configuration breaks (LimbOptions.h: the iliac seal, the
+  /// internal iliac ostium, its overlap), mm, and that constraint ("seal", "covers", "overlap"; or
+  /// "stop": it cannot go further that way); NaN for the main body (its range needs the deployed
+  /// graft: DeploymentTolerance.h).
+  double holdsAboveMm = std::numeric_limits<double>::quiet_NaN();
+  double holdsBelowMm = std::numeric_limits<double>::quiet_NaN();
+  std::string holdsAboveLimit, holdsBelowLimit;
   /// "Endurant II bifurcated main body 28-16 × 145 mm" — diameters proximal-distal × length.
   std::string OrderText() const;
+  /// Its role in words, with its side: "main body", "left contralateral limb", "right iliac extension".
+  std::string RoleText() const;
+  /// "holds if it lands up to 5.0 mm higher (then the left iliac seal falls under the minimum) or
+  /// 5.0 mm lower (then it covers the left internal iliac ostium)"; a negative range as "none (…
+  /// short)"; "" for the main body.
+  std::string HoldsText() const;
 };
 
 /// One junction of two components.
@@ -221,6 +239,8 @@ struct DeviceConfiguration
   double gateEndMm = 0.0;                                    ///< g along the contralateral path
   double gateClearanceMm = 0.0;                              ///< L_AB − g
   double flowDividerMm = 0.0;                                ///< f
+  /// The deployment tolerance the limbs were placed for (LimbOptions.h), mm.
+  double deploymentToleranceMm = 0.0;
   std::vector<ConfigurationFinding> findings;
   /// Remarks that do not fail the plan (a narrow but not extremely narrow distal aorta, a crotch
   /// or gate clearance the catalogue does not give).
@@ -245,10 +265,19 @@ struct ChosenDiameters
   double limbOversizingMaxPercent = 25.0;
 };
 
-/// See the file comment. `ipsilateralSide` is 0 (right) or 1 (left), with its `reason`.
+/// How far a component may land from its planned position and the plan still hold, by default,
+/// mm: the displacement that counts as a limb's migration (≥ 5 mm, device-configuration.md §2,
+/// PMC11880382). The achieved seal of one family fell a median 8 mm short of the planned seal
+/// (IQR −20.5 to +1), but that shortfall is mostly apposition, not position; 5 mm is what a
+/// deployment that lands "where planned" can still miss by.
+constexpr double DeploymentToleranceMm = 5.0;
+
+/// See the file comment. `ipsilateralSide` is 0 (right) or 1 (left), with its `reason`; the limbs
+/// are placed with a margin for `deploymentToleranceMm` (≥ 0; LimbOptions.h).
 DeviceConfiguration ConfigureDevice(const DeviceFamily& family,
                                     const ChosenDiameters& chosen,
                                     const ConfigurationAnatomy& anatomy,
-                                    const SideChoice& ipsilateral);
+                                    const SideChoice& ipsilateral,
+                                    double deploymentToleranceMm = DeploymentToleranceMm);
 
 } // namespace sgp

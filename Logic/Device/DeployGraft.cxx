@@ -301,6 +301,30 @@ DeviceConfiguration PlacedAlongTheGraft(const DeviceConfiguration& c, const std:
   return placed;
 }
 
+DeviceConfiguration PlacedAlongShiftedGraft(const DeviceConfiguration& configuration,
+                                            double targetShiftMm,
+                                            const std::array<GraftAxis, 2>& axes)
+{
+  const auto shift = [](DeviceConfiguration c, double mm)
+  {
+    for (ConfiguredComponent& part : c.components)
+    {
+      part.proximalMm += mm;
+      part.distalMm += mm;
+    }
+    c.flowDividerMm += mm;
+    c.gateEndMm += mm;
+    for (double& covered : c.coveredLengthMm)
+      covered += mm;
+    return c;
+  };
+  DeviceConfiguration placed = shift(PlacedAlongTheGraft(shift(configuration, targetShiftMm), axes), -targetShiftMm);
+  for (ConfiguredComponent& part : placed.components)
+    if (part.role == OrderRole::MainBody)
+      part.proximalMm = 0.0;
+  return placed;
+}
+
 FabricDeployment DeployTheFabric(const CenterlineTree& tree,
                                  const Measurements& measurements,
                                  const DeviceConfiguration& configuration,

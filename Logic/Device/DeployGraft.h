@@ -147,6 +147,17 @@ GraftAxis GraftAxisOf(const GraftLayout& layout, const Points& V, int side);
 /// contralateral one (the trunk's rings are on both).
 DeviceConfiguration PlacedAlongTheGraft(const DeviceConfiguration& configuration, const std::array<GraftAxis, 2>& axes);
 
+/// `configuration` (deployed with its target `targetShiftMm` further down the aorta than the target
+/// `axes` were fitted from) placed along those axes: its positions read from the old target
+/// (+ shift), placed (PlacedAlongTheGraft), and read from its own target again (− shift); the main
+/// body's proximal edge stays at its target. The path between the two targets is exact; the fabric
+/// there is taken as long as the path (the neck runs nearly straight at the target). What the
+/// deployment tolerance (DeploymentTolerance.h) uses to deploy a displaced configuration in one
+/// fit: a component moved a few millimetres does not change the graft's course.
+DeviceConfiguration PlacedAlongShiftedGraft(const DeviceConfiguration& configuration,
+                                            double targetShiftMm,
+                                            const std::array<GraftAxis, 2>& axes);
+
 struct FabricDeployment
 {
   DeployedGraft graft;

@@ -10,6 +10,7 @@
 #include "Centerlines/ProximalSite.h"
 #include "Common/Errors.h"
 #include "Common/Format.h"
+#include "Common/Text.h"
 #include "Common/Median.h"
 #include "Device/SelectDevice.h"
 
@@ -526,13 +527,13 @@ FitCheck CheckGraftFit(const DeployedGraft& graft,
     }
   for (const OstiumCoverage& o : c.ostia)
     if (o.covered)
-      c.findings.push_back(o.branch + " ostium covered by the deployed graft (" + Mm(o.overlapMm) + " of it on " +
-                           o.parent + ")");
+      c.findings.push_back("the " + IdentifierWords(o.branch) + " ostium is covered by the deployed graft (" +
+                           Mm(o.overlapMm) + " of it, on the " + IdentifierWords(o.parent) + ")");
     else if (o.mayBeCovered)
-      c.findings.push_back(o.branch + " ostium may be covered by the deployed graft: the graft's edge lies " +
-                           Mm(std::max(0.0, -o.overlapMm)) +
-                           " from the ostium's edge, within that edge's uncertainty of " + Mm(o.edgeUncertaintyMm) +
-                           " (" + o.edgeUncertaintyWhy + ")");
+      c.findings.push_back(
+        "the " + IdentifierWords(o.branch) + " ostium may be covered by the deployed graft: the graft's edge lies " +
+        Mm(std::max(0.0, -o.overlapMm)) + " from the ostium's edge, within that edge's uncertainty of " +
+        Mm(o.edgeUncertaintyMm) + " (" + o.edgeUncertaintyWhy + ")");
   for (const ConfigurationFinding& f : context.configurationFindings)
     c.findings.push_back(f.text + " — option: " + f.option);
   return c;

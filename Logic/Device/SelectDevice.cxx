@@ -481,7 +481,7 @@ DeviceSelection SelectDevice(const SizingAnatomy& anatomy,
     ConfigurationAnatomy onWall = *lengths;
     const SizingAnatomy a = anatomy.On(family.diameterReference);
     onWall.iliacDiameterMm = { a.rightIliacDiameterMm, a.leftIliacDiameterMm };
-    e.configuration = ConfigureDevice(family, chosen, onWall, e.ipsilateral);
+    e.configuration = ConfigureDevice(family, chosen, onWall, e.ipsilateral, params.deploymentToleranceMm);
     if (e.configuration.configured)
     {
       const std::vector<SizeAlternative> diameters = DiameterAlternatives(anatomy, family, e, params);

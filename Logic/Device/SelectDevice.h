@@ -111,6 +111,9 @@ struct DeviceSelectionParams
   std::string forcedDevice;
   /// The side the main body goes up (ChooseIpsilateralSide): its access check and configuration.
   IpsilateralSide ipsilateralSide = IpsilateralSide::Auto;
+  /// How far a component may land from its plan, mm (≥ 0): the limbs are placed with this margin
+  /// where their landing window allows (ConfigureDevice, LimbOptions.h).
+  double deploymentToleranceMm = DeploymentToleranceMm;
 };
 
 /// One chosen catalogue size, or none.

@@ -57,6 +57,13 @@ nlohmann::json DeploymentToJson(const RepairPlan& plan)
                   { "lengthMm", NumberOrNull(part.item.lengthMm) },
                   { "evidence", part.item.evidence } };
     json.update(Placement(plan, target, part));
+    // How far it may land from its plan (ConfiguredComponent::holds…; null for the main body).
+    json["holdsMm"] = std::isfinite(part.holdsAboveMm + part.holdsBelowMm)
+                        ? Json{ { "above", part.holdsAboveMm },
+                                { "below", part.holdsBelowMm },
+                                { "aboveLimit", part.holdsAboveLimit },
+                                { "belowLimit", part.holdsBelowLimit } }
+                        : Json(nullptr);
     if (simulated)
     {
       const ConfiguredComponent& placed = plan.graft.layout.components[index];
@@ -103,6 +110,29 @@ nlohmann::json DeploymentToJson(const RepairPlan& plan)
                                           { "distalEdgeShiftMm", NumberOrNull(plan.distalEdgeShiftMm[s]) } };
     }
   }
+  // How far each component may land from its plan, simulated (issue 47; null when not assessed).
+  const DeploymentTolerance& t = plan.deploymentTolerance;
+  Json holds = Json::array();
+  for (const ComponentHold& h : t.components)
+    holds.push_back({ { "component", h.component },
+                      { "name", h.name },
+                      { "aboveMm", h.aboveMm },
+                      { "belowMm", h.belowMm },
+                      { "aboveFails", h.aboveFails.empty() ? Json(nullptr) : Json(h.aboveFails) },
+                      { "belowFails", h.belowFails.empty() ? Json(nullptr) : Json(h.belowFails) },
+                      { "aboveStops", h.aboveStops },
+                      { "belowStops", h.belowStops },
+                      { "text", h.Text(t.searchMm) },
+                      { "finding", h.finding.empty() ? Json(nullptr) : Json(h.finding) } });
+  const Json tolerance = { { "assessed", t.assessed },
+                           { "notAssessedReason", t.assessed ? Json(nullptr) : Json(t.notAssessedReason) },
+                           { "toleranceMm", t.toleranceMm },
+                           { "searchMm", t.searchMm },
+                           { "resolutionMm", t.resolutionMm },
+                           { "simulations", t.simulations },
+                           { "components", holds },
+                           { "findings", t.findings },
+                           { "notes", t.notes } };
   const double toBifurcation = plan.measurements.bifurcationAbscissaMm - target;
   return {
     { "family", c->family },
@@ -120,7 +150,9 @@ nlohmann::json DeploymentToJson(const RepairPlan& plan)
     { "gateEndMm", c->configured ? Json(c->gateEndMm) : Json(nullptr) },
     { "gateClearanceMm", c->configured ? Json(c->gateClearanceMm) : Json(nullptr) },
     { "flowDividerMm", c->configured ? Json(c->flowDividerMm) : Json(nullptr) },
+    { "deploymentToleranceMm", c->configured ? Json(c->deploymentToleranceMm) : Json(nullptr) },
     { "simulatedLength", simulatedLength },
+    { "tolerance", simulated && plan.graft.layout.configured ? tolerance : Json(nullptr) },
     { "anatomy",
       { { "deploymentTargetAbscissaMm", target },
         { "deploymentMarginMm", plan.deploymentMarginMm },

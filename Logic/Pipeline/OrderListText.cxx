@@ -20,24 +20,6 @@ std::string Mm(double value)
   return std::isfinite(value) ? FormatNumber(value) + " mm" : std::string("not measured");
 }
 
-std::string RoleWords(const ConfiguredComponent& c)
-{
-  switch (c.role)
-  {
-    case OrderRole::MainBody:
-      return "main body";
-    case OrderRole::IpsilateralLimb:
-      return std::string(SideName(c.side)) + " ipsilateral limb";
-    case OrderRole::ContralateralLimb:
-      return std::string(SideName(c.side)) + " contralateral limb";
-    case OrderRole::IliacExtension:
-      return std::string(SideName(c.side)) + " iliac extension";
-    case OrderRole::AorticCuff:
-      return "aortic cuff";
-  }
-  return "";
-}
-
 } // namespace
 
 std::string AnatomyLengthsText(const RepairPlan& plan)
@@ -85,8 +67,9 @@ std::vector<std::string> OrderLines(const RepairPlan& plan)
         ", flow divider " + Mm(c->flowDividerMm) + " and contralateral gate end " + Mm(c->gateEndMm) + " below it (" +
         Mm(c->gateClearanceMm) + " above the aortic bifurcation), ipsilateral leg to " + Mm(part.distalMm);
     else
-      where = "from " + Mm(part.proximalMm) + " to " + Mm(part.distalMm) + " below the proximal edge";
-    lines.push_back("  " + RoleWords(part) + ": " + part.OrderText() + ", " + where);
+      where = "from " + Mm(part.proximalMm) + " to " + Mm(part.distalMm) + " below the proximal edge" +
+              (std::isfinite(part.holdsAboveMm + part.holdsBelowMm) ? "; " + part.HoldsText() : std::string());
+    lines.push_back("  " + part.RoleText() + ": " + part.OrderText() + ", " + where);
   }
   for (const ComponentOverlap& o : c->overlaps)
     lines.push_back("  overlap, " + o.junction + ": " + Mm(o.overlapMm) + " (needs " + OverlapNeedsText(o) + ")");
@@ -103,6 +86,21 @@ std::vector<std::string> OrderLines(const RepairPlan& plan)
                            SimulatedLengthText(plan, side)
                        : std::string()));
   }
+  const DeploymentTolerance& t = plan.deploymentTolerance;
+  if (t.assessed)
+  {
+    lines.push_back("  deployment tolerance (each component moved up to " + Mm(t.searchMm) +
+                    " up and down its vessel, the others where planned; it should hold " + Mm(t.toleranceMm) +
+                    " either way):");
+    for (const ComponentHold& h : t.components)
+      lines.push_back("    " + h.name + ": " + h.Text(t.searchMm));
+    for (const std::string& f : t.findings)
+      lines.push_back("  FINDING (deployment tolerance): " + f + ".");
+    for (const std::string& note : t.notes)
+      lines.push_back("  Note: " + note);
+  }
+  else if (!t.notAssessedReason.empty())
+    lines.push_back("  deployment tolerance: not assessed — " + t.notAssessedReason + ".");
   for (const ConfigurationFinding& f : c->findings)
     lines.push_back("  FINDING: " + f.text + ". Option: " + f.option + ".");
   for (const std::string& note : c->notes)

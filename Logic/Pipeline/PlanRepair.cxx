@@ -17,6 +17,8 @@
 #include "Common/Text.h"
 #include "Device/ConfigurationLengths.h"
 #include "Device/DeployGraft.h"
+#include "Pipeline/PlanRows.h"
+#include "Pipeline/PlanTolerance.h"
 #include "Segmentation/FindAorticSeed.h"
 #include "Segmentation/FindEndograft.h"
 #include "Segmentation/LumenFromSegmentation.h"
@@ -230,109 +232,6 @@ void Measure(const WallDistanceField& wall, const PlanParams& params, const Stag
   }
 }
 
-/// The simulated device's sizes as table rows, on the wall its IFU names (the graft's diameters:
-/// the selection's, or the configuration's where it planned a limb the selection could not size).
-void AddDeviceRows(const DeviceCatalog& catalog, RepairPlan& plan)
-{
-  const FamilyEvaluation& family = plan.selection.families[plan.simulatedFamily];
-  const bool outer =
-    catalog.families[std::size_t(family.catalogIndex)].diameterReference == DiameterReference::OuterWall;
-  const std::string wall = outer ? "outer" : "lumen";
-  const std::string over = outer ? " % over the outer-wall " : " % over the lumen's ";
-  const std::string name = family.family + (!plan.fitCheck.Complete() ? " (main body only: partial plan)"
-                                            : plan.selection.recommended == plan.simulatedFamily ? ""
-                                                                                                 : " (outside IFU)");
-  const StentMesh& mesh = plan.graft.layout.mesh;
-  const SizingAnatomy sizing =
-    SizingFromMeasurements(plan.measurements).On(catalog.families[std::size_t(family.catalogIndex)].diameterReference);
-  const double vessels[3] = { sizing.proximalNeckDiameterMm, sizing.rightIliacDiameterMm, sizing.leftIliacDiameterMm };
-  const char* names[3] = { "mainBodyDiameter", "rightLimbDiameter", "leftLimbDiameter" };
-  const char* parts[3] = { " main body, ", " right limb, ", " left limb, " };
-  const char* levels[3] = { "(a)", "(e)", "(f)" };
-  const char* vesselNames[3] = { "aorta", "rightIliac", "leftIliac" };
-  for (int k = 0; k < 3; ++k)
-  {
-    const double d = plan.graftDiametersMm[std::size_t(k)];
-    const double at = k == 0 ? plan.graft.layout.targetAbscissaMm : mesh.ringAbscissaMm[std::size_t(k)].back();
-    plan.rows.push_back({ names[k], d, "mm",
-                          name + parts[k] + FormatNumber(OversizingPercent(d, vessels[k])) + over + levels[k],
-                          vesselNames[k], at });
-    Measurement& row = plan.rows.back();
-    row.wall = family.EstimatedOnLumen() ? "lumen" : wall;
-    row.estimated = family.EstimatedOnLumen();
-    if (family.EstimatedOnLumen())
-      row.definition += "; estimated (lumen): sized on the lumen at " + JoinWithCommas(family.estimatedFromLumen) +
-                        " where the outer wall was not traced";
-  }
-  for (const Measurement& m : FitCheckRows(plan.fitCheck, plan.graft))
-    plan.rows.push_back(m);
-}
-
-/// The ordered components' lengths as table rows (mainBodyLength, rightLimbLength,
-/// leftLimbLength): NaN when the configuration was not made, 0 for a side whose main-body leg
-/// lands without a limb.
-void AddOrderRows(RepairPlan& plan)
-{
-  const DeviceConfiguration* c = plan.Configuration();
-  const double target = plan.deploymentTargetAbscissaMm;
-  const bool configured = c && c->configured;
-  const ConfiguredComponent* body = configured ? c->Find(OrderRole::MainBody) : nullptr;
-  const std::string estimated =
-    plan.orderedFamily >= 0 && plan.selection.families[std::size_t(plan.orderedFamily)].EstimatedOnLumen()
-      ? "; estimated (lumen)"
-      : "";
-  const std::string why = c ? c->unknownReason : "no main body was sized";
-  plan.rows.push_back({ "mainBodyLength", body ? body->item.lengthMm : std::numeric_limits<double>::quiet_NaN(), "mm",
-                        body
-                          ? c->family + " " + body->item.name + " " + body->item.CodeText() +
-                              ": covered length from the proximal fabric edge to the ipsilateral leg's end" + estimated
-                          : "main body length: not configured (" + why + ")" + estimated,
-                        "aorta", target });
-  const char* names[2] = { "rightLimbLength", "leftLimbLength" };
-  const char* vessels[2] = { "rightIliac", "leftIliac" };
-  for (int side = 0; side < 2; ++side)
-  {
-    const ConfiguredComponent* limb = nullptr;
-    if (configured)
-      limb = c->Find(side == c->ipsilateralSide ? OrderRole::IpsilateralLimb : OrderRole::ContralateralLimb, side);
-    const std::string sideName = side == 0 ? "right" : "left";
-    std::string definition =
-      !configured ? sideName + " limb length: not configured (" + why + ")" + estimated
-      : limb      ? c->family + " " + sideName + (side == c->ipsilateralSide ? " ipsilateral" : " contralateral") +
-                 " limb " + limb->item.CodeText() + ", its covered length; the " + sideName + " side covers " +
-                 FormatNumber(c->coveredLengthMm[side]) + " mm from the proximal fabric edge" + estimated
-             : "no " + sideName + " limb: the main body's ipsilateral leg lands there (" +
-                 FormatNumber(c->coveredLengthMm[side]) + " mm from the proximal edge)";
-    const double value = !configured ? std::numeric_limits<double>::quiet_NaN() : limb ? limb->item.lengthMm : 0.0;
-    plan.rows.push_back({ names[side], value, "mm", definition, vessels[side],
-                          configured ? c->coveredLengthMm[side] - plan.measurements.bifurcationAbscissaMm + target -
-                                         plan.measurements.iliacStartBeyondBifurcationMm[side]
-                                     : std::numeric_limits<double>::quiet_NaN() });
-  }
-}
-
-/// The lumen grid's voxel extent along the aorta at the proximal site (FitCheckContext::
-/// voxelAlongAortaMm): √Σ_i (axis_i · t spacing_i)², the image's axes in LPS, t the aorta's direction
-/// there (its top where the site is not known), mm; NaN without the mask or the aorta.
-double VoxelAlongAortaMm(const RepairPlan& plan)
-{
-  const Centerline& aorta = plan.centerlines.aorta;
-  if (!plan.lumen.mask || aorta.Size() < 2)
-    return std::numeric_limits<double>::quiet_NaN();
-  const Eigen::Vector3d t = TangentAt(aorta, plan.measurements.site.Known() ? plan.measurements.site.abscissaMm : 0.0);
-  const auto& direction = plan.lumen.mask->GetDirection();
-  const auto& spacing = plan.lumen.mask->GetSpacing();
-  double extent = 0.0;
-  for (unsigned axis = 0; axis < 3; ++axis)
-  {
-    double along = 0.0;
-    for (unsigned row = 0; row < 3; ++row)
-      along += direction[row][axis] * t[Eigen::Index(row)];
-    extent += along * along * spacing[axis] * spacing[axis];
-  }
-  return std::sqrt(extent);
-}
-
 /// A partial plan whose limbs cannot be sized: the proximal part of the fit check (proximal seal,
 /// proximal oversizing, covered aortic ostia) with the main body of the family FamilyForMainBody
 /// picks. Each leg takes the limb the selection chose for it where that side was sized, else the
@@ -452,6 +351,9 @@ void SimulateTheConfiguration(const WallDistanceField& measureWall,
   context.minimumOverlapMm = catalogued.junctions.overlapMm.min;
   context.configurationFindings = configuration.findings;
   plan.fitCheck = CheckGraftFit(plan.graft, plan.measurements, plan.centerlines, &plan.vesselWall, context);
+  plan.graftAxes = axes;
+  if (params.assessDeploymentTolerance)
+    plan.deploymentTolerance = AssessPlanTolerance(plan, params, measureWall, context);
   if (plan.selection.recommended < 0)
     report.Warn("No device is within its instructions for use; the graft simulated is the nearest, " + family.family +
                 " (outside its IFU).");

@@ -51,6 +51,7 @@
 #include "Common/Types.h"
 #include "Device/DeviceCatalog.h"
 #include "Device/DeployGraft.h"
+#include "Device/DeploymentTolerance.h"
 #include "Device/FitCheck.h"
 #include "Device/HostileNeck.h"
 #include "Device/SelectDevice.h"
@@ -122,6 +123,9 @@ struct PlanParams
   /// uncertainty less the overlap an ostium's edge tolerates) along the aorta, mm (negative: above
   /// it), in [−30, 60].
   double deploymentOffsetMm = 0.0;
+  /// Whether to deploy the configuration again with each component displaced up to twice
+  /// selection.deploymentToleranceMm (DeploymentTolerance.h; a few dozen deployments).
+  bool assessDeploymentTolerance = true;
   /// The device catalogue (read and validated at the edge); needed when the plan reaches Device.
   DeviceCatalog catalog;
   /// The hostile-neck rules (read and validated at the edge); empty: the neck is not assessed.
@@ -194,6 +198,11 @@ struct RepairPlan
   std::array<double, 2> distalEdgeShiftMm{ std::numeric_limits<double>::quiet_NaN(),
                                            std::numeric_limits<double>::quiet_NaN() };
   FitCheck fitCheck;
+  /// How far each component may land from its plan (issue 47; DeploymentTolerance.h): assessed
+  /// for a configured graft that passes its fit check, with PlanParams::assessDeploymentTolerance.
+  DeploymentTolerance deploymentTolerance;
+  /// The simulated ordered graft's right and left axes (GraftAxisOf), when it was configured.
+  std::array<GraftAxis, 2> graftAxes;
   /// Why no graft was simulated (a sentence without a final full stop), when the plan reached the
   /// device stage without one; else empty.
   std::string notSimulatedReason;

@@ -99,6 +99,7 @@ const std::vector<std::string>& ReturnValueNames()
     "coveredOstia",
     "migrationRisk",
     "fitCheckPassed",
+    "deploymentToleranceHeld",
     "estimatedValues",
     "notMeasured",
   };
@@ -162,6 +163,8 @@ std::vector<PlanValue> PlanReturnValues(const RepairPlan& plan)
   put(Text("coveredOstia", plan.fitCheck.CoveredOstia(), simulated));
   put(Boolean("migrationRisk", plan.fitCheck.migrationRisk, simulated));
   put(Boolean("fitCheckPassed", plan.fitCheck.Passed(), simulated));
+  put(Boolean("deploymentToleranceHeld", plan.deploymentTolerance.findings.empty(),
+              simulated && plan.deploymentTolerance.assessed));
 
   // estimatedValues lists the values before it that are estimates; notMeasured, the last name,
   // those the plan does not have.

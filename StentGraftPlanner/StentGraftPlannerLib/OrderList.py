@@ -104,7 +104,42 @@ def _componentLine(component, deployment, report):
         return text + (", " + ", ".join(parts) if parts else "")
     if proximal is not None and distalEnd is not None:
         text += ", from %s to %s below the proximal edge" % (_mm(proximal), _mm(distalEnd))
-    return text
+    holds = holdsText(component)
+    return text + ("; " + holds if holds else "")
+
+
+#: What ends a component's hold range (the report's deployment.components[].holdsMm limits), above
+#: and below: a failure, or a stop (it cannot go further that way).
+_HOLD_LIMITS = {
+    "covers": ("it covers the {side} internal iliac ostium",) * 2,
+    "seal": ("the {side} iliac seal falls under the minimum",) * 2,
+    "overlap": ("an overlap falls under the minimum",) * 2,
+    "stop": ("it is as deep as it goes in what it is inserted into: it cannot land higher",
+             "what is inserted into it is as deep as it goes: it cannot land lower"),
+}
+
+
+def holdsText(component):
+    """How far a limb or extension may land from its plan (issue 47): "holds if it lands up to 5.0 mm
+    higher (then the left iliac seal falls under the minimum) or 5.0 mm lower (then it covers the left
+    internal iliac ostium)"; "" where the report gives no range (the main body, an older report)."""
+    holds = _dict(component.get("holdsMm"))
+    if not holds:
+        return ""
+    above, below = _toFloat(holds.get("above")), _toFloat(holds.get("below"))
+    if above is None or below is None:
+        return ""
+    side = componentSide(component) or ""
+
+    def limit(key, above):
+        words = _HOLD_LIMITS.get(key, (_words(key or "a constraint"),) * 2)[0 if above else 1]
+        return words.format(side=side).replace("  ", " ")
+
+    def rangeText(mm):
+        return _mm(mm) if mm >= 0 else "none (%s short)" % _mm(-mm)
+
+    return "holds if it lands up to %s higher (then %s) or %s lower (then %s)" % (
+        rangeText(above), limit(holds.get("aboveLimit"), True), rangeText(below), limit(holds.get("belowLimit"), False))
 
 
 def _overlapLine(overlap):
@@ -181,6 +216,7 @@ def orderListLines(report, values=None):
         text = _sideLine(deployment, side)
         if text:
             lines.append(("text", text))
+    lines += toleranceLines(deployment)
     for finding in _list(deployment.get("findings")):
         if isinstance(finding, dict):
             lines.append(("fail", "Finding: %s." % finding.get("text", "?")))
@@ -191,6 +227,31 @@ def orderListLines(report, values=None):
     for alternative in _list(deployment.get("alternatives")):
         if isinstance(alternative, dict):
             lines.append(("text", "Alternative: %s." % alternative.get("text", "?")))
+    return lines
+
+
+def toleranceLines(deployment):
+    """The simulated deployment tolerance (issue 47; the report's deployment.tolerance): a heading line,
+    one line per component ("main body: holds from 0.0 mm above to at least 10.0 mm below its planned
+    position (…)"; "ok" where it holds the tolerance either way, "fail" where it does not), each
+    finding, each note; one line saying why when it was not assessed; none for an older report."""
+    tolerance = _dict(deployment.get("tolerance"))
+    if not tolerance:
+        return []
+    if not tolerance.get("assessed"):
+        reason = tolerance.get("notAssessedReason")
+        return [("indeterminate", "Deployment tolerance not assessed: %s." % reason)] if reason else []
+    lines = [("text", "Deployment tolerance: each component moved up to %s up and down its vessel (the others where "
+                      "planned); it should hold %s either way"
+              % (_mm(_toFloat(tolerance.get("searchMm"))), _mm(_toFloat(tolerance.get("toleranceMm")))))]
+    for hold in _list(tolerance.get("components")):
+        if isinstance(hold, dict):
+            lines.append(("fail" if hold.get("finding") else "ok",
+                          "%s: %s" % (hold.get("name", "?"), hold.get("text", "?"))))
+    for finding in _list(tolerance.get("findings")):
+        lines.append(("fail", "Finding (deployment tolerance): %s." % finding))
+    for note in _list(tolerance.get("notes")):
+        lines.append(("warning", "Note: %s" % note))
     return lines
 
 

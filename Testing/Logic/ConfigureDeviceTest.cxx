@@ -11,7 +11,9 @@
 #include <gtest/gtest.h>
 
 #include "Device/ConfigureDevice.h"
+#include "Common/Errors.h"
 #include "Device/CriterionCheck.h"
+#include "Device/LimbOptions.h"
 #include "IO/ReadDeviceCatalog.h"
 
 namespace sgp
@@ -178,7 +180,8 @@ TEST_P(CommonIliacAndAorta, LimbsLandAboveTheInternalIliacAsLowAsTheCatalogueAll
     const double limb = 16.0; // both families offer 16 mm for a 14 mm iliac (14.3 %)
     const double body = name == "Endurant II" ? 25.0 : 26.0;
     const ConfigurationAnatomy a = Anatomy(toBifurcation, cia, cia);
-    const DeviceConfiguration c = ConfigureDevice(family, Chosen(body, limb), a, Right);
+    // Without a deployment tolerance: the rule this test holds it to (the margin: below).
+    const DeviceConfiguration c = ConfigureDevice(family, Chosen(body, limb), a, Right, 0.0);
     ExpectConsistent(family, c, a);
     if (::testing::Test::HasFatalFailure())
       return;
@@ -403,6 +406,146 @@ TEST(ConfigureDevice, InternalIliacOriginNearALengthBoundary_ListsTheOtherLength
     EXPECT_NE(listed->text.find("uncertainty"), std::string::npos);
   }
   EXPECT_TRUE(found);
+}
+
+/// Brute force over every single limb of `distalMm` and every 0.01 mm of its overlap in a stub
+/// [stubStart, stubEnd]: the widest margin (the narrower of its ranges below — to W_hi, to the
+/// overlap's minimum — and above — to W_lo, unless the overlap window's top stops it first —
+/// capped at `tolerance`) of an edge in [lo, hi], and the lowest edge with it (within 0.05 mm);
+/// NaN when none lands.
+std::pair<double, double> BestMarginBruteForce(const DeviceFamily& family,
+                                               double stubStart,
+                                               double stubEnd,
+                                               double distalMm,
+                                               double lo,
+                                               double hi,
+                                               double tolerance)
+{
+  std::vector<std::pair<double, double>> placements; // margin, edge
+  for (const CatalogueComponent* limb : family.ComponentsOf(ComponentRole::Limb))
+  {
+    if (limb->distalDiameterMm != distalMm)
+      continue;
+    const double ovLo = family.junctions.overlapMm.min;
+    double ovHi = std::min(stubEnd - stubStart, limb->lengthMm - 1.0);
+    if (!std::isnan(family.junctions.overlapMm.max))
+      ovHi = std::min(ovHi, family.junctions.overlapMm.max);
+    for (double ov = ovLo; ov <= ovHi + 1e-9; ov += 0.01)
+    {
+      const double edge = stubEnd - ov + limb->lengthMm;
+      // Up, its seal fails unless its overlap reaches the window's top first (a stop: safe).
+      const double above = ovHi - ov <= edge - lo ? 1e9 : edge - lo;
+      if (edge >= lo && edge <= hi)
+        placements.emplace_back(std::min({ tolerance, hi - edge, ov - ovLo, above }), edge);
+    }
+  }
+  double best = -1.0, lowest = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& [margin, edge] : placements)
+    best = std::max(best, margin);
+  for (const auto& [margin, edge] : placements)
+    if (margin >= best - 0.05 && !(edge <= lowest))
+      lowest = edge;
+  return { best < 0.0 ? std::numeric_limits<double>::quiet_NaN() : best, lowest };
+}
+
+class DeploymentMargin : public ::testing::TestWithParam<std::tuple<double, double>>
+{
+};
+
+// Issue 47: a limb placed with a margin for the deployment tolerance. On common iliacs of 18–60 mm
+// (windows from 0 to 42 mm between the minimum seal and the ostium) and tolerances of 2.5 and
+// 5 mm, the contralateral limb's narrowest range is the widest any single limb of the catalogue
+// reaches there (brute force every 0.01 mm of overlap), its edge within SameEdgeMm of the lowest
+// with that margin; its stated ranges are the path's own differences (to the ostium, to the
+// overlap's minimum, to the minimum seal or the window's top). The configuration states them
+// and makes no finding of them: the simulated graft's ranges do (DeploymentTolerance.h).
+TEST_P(DeploymentMargin, LimbPlacedWhereItsNarrowestRangeIsWidest)
+{
+  const auto [cia, tolerance] = GetParam();
+  for (const std::string& name : { std::string("Endurant II"), std::string("Excluder Conformable") })
+  {
+    SCOPED_TRACE(name);
+    const DeviceFamily& family = Family(name);
+    const double body = name == "Endurant II" ? 25.0 : 26.0;
+    const ConfigurationAnatomy a = Anatomy(140.0, 55.0, cia);
+    const DeviceConfiguration c = ConfigureDevice(family, Chosen(body, 16.0), a, Right, tolerance);
+    ExpectConsistent(family, c, a);
+    if (::testing::Test::HasFatalFailure())
+      return;
+    EXPECT_EQ(c.deploymentToleranceMm, tolerance);
+    const ConfiguredComponent* limb = c.Find(OrderRole::ContralateralLimb, 1);
+    ASSERT_NE(limb, nullptr);
+    const double lo = c.landingLowMm[1], hi = c.landingHighMm[1];
+    const auto [best, lowest] = BestMarginBruteForce(family, c.flowDividerMm, c.gateEndMm, 16.0, lo, hi, tolerance);
+    if (c.Find(OrderRole::IliacExtension, 1) || std::isnan(best))
+      continue; // an extension, or no single limb lands: the margin rule is not what decides
+    const ComponentOverlap* overlap = nullptr;
+    for (const ComponentOverlap& o : c.overlaps)
+      if (o.side == 1 && o.inner == int(limb - c.components.data()))
+        overlap = &o;
+    ASSERT_NE(overlap, nullptr);
+    const double edge = limb->distalMm;
+    // The ranges are the path's own differences (exact sums of catalogue figures).
+    EXPECT_NEAR(limb->holdsBelowMm, std::min(hi - edge, overlap->overlapMm - overlap->minMm), ExactMm);
+    const bool stops = overlap->maxMm - overlap->overlapMm <= edge - lo;
+    EXPECT_NEAR(limb->holdsAboveMm, stops ? overlap->maxMm - overlap->overlapMm : edge - lo, ExactMm);
+    EXPECT_EQ(limb->holdsAboveLimit, stops ? "stop" : "seal");
+    EXPECT_EQ(limb->holdsBelowLimit, hi - edge <= overlap->overlapMm - overlap->minMm ? "covers" : "overlap");
+    const double margin = std::min({ tolerance, stops ? 1e9 : limb->holdsAboveMm, limb->holdsBelowMm });
+    // The brute force's 0.01 mm grid and its 0.05 mm "alike" margins.
+    EXPECT_NEAR(margin, best, 0.06) << "not the widest narrowest range a single limb reaches";
+    EXPECT_GE(edge, lowest - SameEdgeMm - 0.02) << "a lower edge with the same margin exists";
+    for (const ConfigurationFinding& f : c.findings)
+      EXPECT_NE(f.constraint, "narrowDeploymentRange") << f.text;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(CommonIliacs,
+                         DeploymentMargin,
+                         ::testing::Combine(::testing::Values(18.0, 22.0, 26.0, 30.0, 40.0, 60.0),
+                                            ::testing::Values(2.5, 5.0)),
+                         [](const auto& info)
+                         {
+                           return "Cia" + std::to_string(int(std::get<0>(info.param))) + "_Tolerance" +
+                                  std::to_string(int(std::get<1>(info.param) * 10)) + "tenths";
+                         });
+
+// The issue's failure: with no margin the limb ends at the ostium (0.0 mm below holds). With the
+// default tolerance it ends as far above it as the catalogue's lengths and its overlap in the gate
+// let it slip (Endurant: a 30–34 mm window, so at most 4 mm), its top at the flow divider (it cannot
+// land higher: a stop), and its seal that much shorter.
+TEST(ConfigureDevice, DefaultTolerance_LimbNoLongerEndsAtTheOstium)
+{
+  const DeviceFamily& family = Family("Endurant II");
+  // The first left common iliac from 30 mm on (every 0.25 mm) where, without a margin, a limb
+  // ends exactly at the ostium (its overlap window holds the ostium's position).
+  double cia = 30.0;
+  while (cia < 70.0 &&
+         ConfigureDevice(family, Chosen(25, 16), Anatomy(140.0, 55.0, cia), Right, 0.0).marginToInternalIliacMm[1] >
+           ExactMm)
+    cia += 0.25;
+  ASSERT_LT(cia, 70.0);
+  const ConfigurationAnatomy a = Anatomy(140.0, 55.0, cia);
+  const DeviceConfiguration exact = ConfigureDevice(family, Chosen(25, 16), a, Right, 0.0);
+  const DeviceConfiguration margin = ConfigureDevice(family, Chosen(25, 16), a, Right);
+  ExpectConsistent(family, margin, a);
+  EXPECT_NEAR(exact.Find(OrderRole::ContralateralLimb, 1)->holdsBelowMm, 0.0, ExactMm);
+  const ConfiguredComponent* limb = margin.Find(OrderRole::ContralateralLimb, 1);
+  ASSERT_NE(limb, nullptr);
+  const ComponentOverlap& gate = margin.overlaps.back();
+  ASSERT_EQ(gate.inner, int(limb - margin.components.data()));
+  // The most room any single limb has here (brute force), at most the gate's 4 mm of overlap.
+  const double room = BestMarginBruteForce(family, margin.flowDividerMm, margin.gateEndMm, 16.0, margin.landingLowMm[1],
+                                           margin.landingHighMm[1], DeploymentToleranceMm)
+                        .first;
+  EXPECT_GE(room, 1.0);
+  EXPECT_LE(room, gate.maxMm - gate.minMm + ExactMm);
+  EXPECT_NEAR(limb->holdsBelowMm, room, 0.06) << margin.OrderList(); // the brute force's grid
+  EXPECT_GE(margin.marginToInternalIliacMm[1], limb->holdsBelowMm - ExactMm);
+  EXPECT_EQ(limb->holdsAboveLimit, "stop");
+  EXPECT_TRUE(margin.findings.empty()) << margin.findings.front().text;
+  EXPECT_NE(limb->HoldsText().find("it cannot land higher"), std::string::npos) << limb->HoldsText();
+  EXPECT_THROW(ConfigureDevice(family, Chosen(25, 16), a, Right, -1.0), InputError);
 }
 
 } // namespace

@@ -109,6 +109,58 @@ class OrderListTest(unittest.TestCase):
         self.assertIn(("text", "left side: covered 177.9 mm from the proximal edge; planned seal in the common iliac "
                                "51.0 mm, distal edge 3.3 mm past the internal iliac ostium (covers it)"), lines)
 
+    def test_HoldRanges_InWordsAtClinicalPrecision_AndANegativeOneAsNone(self):
+        # Issue 47: how far a limb may land from its plan (report deployment.components[].holdsMm).
+        def change(deployment):
+            deployment["components"][2]["holdsMm"] = {"above": 5.0, "below": 4.96, "aboveLimit": "seal",
+                                                      "belowLimit": "covers"}
+            deployment["components"][1]["holdsMm"] = {"above": 12.349, "below": -0.74, "aboveLimit": "stop",
+                                                      "belowLimit": "overlap"}
+        lines = [text for kind, text in OrderList.orderListLines(withDeployment(change))]
+        self.assertIn("left contralateral limb: Endurant limb 16 × 124 mm (ETLW1616C124E), from 53.9 mm to 177.9 mm "
+                      "below the proximal edge; holds if it lands up to 5.0 mm higher (then the left iliac seal falls "
+                      "under the minimum) or 5.0 mm lower (then it covers the left internal iliac ostium)", lines)
+        self.assertIn("right ipsilateral limb: Endurant limb 16 × 82 mm (ETLW1616C082E), from 51.9 mm to 133.9 mm "
+                      "below the proximal edge; holds if it lands up to 12.3 mm higher (then it is as deep as it goes "
+                      "in what it is inserted into: it cannot land higher) or none (0.7 mm short) lower (then an overlap "
+                      "falls under the minimum)", lines)
+        # The main body and a report without ranges: nothing added.
+        self.assertEqual(OrderList.holdsText({"role": "mainBody", "holdsMm": None}), "")
+        self.assertEqual(OrderList.holdsText({"role": "contralateralLimb"}), "")
+
+    def test_DeploymentTolerance_EachComponentsRange_FindingsAndNotes(self):
+        # Issue 47: the simulated ranges (report deployment.tolerance), after the sides' lines.
+        tolerance = {
+            "assessed": True, "toleranceMm": 5.0, "searchMm": 10.0, "resolutionMm": 0.5, "simulations": 8,
+            "components": [
+                {"component": 0, "name": "main body", "finding": None,
+                 "text": "holds from 0.0 mm above to at least 10.0 mm below its planned position"},
+                {"component": 2, "name": "left contralateral limb",
+                 "finding": "the left contralateral limb holds only 0.0 mm below (…)",
+                 "text": "holds from 0.0 mm (as far as it goes) above to 0.0 mm below its planned position"}],
+            "findings": ["the left contralateral limb holds only 0.0 mm below (lower: type III endoleak risk) its "
+                         "planned position: less than the 5.0 mm deployment tolerance"],
+            "notes": ["The main body's proximal edge is placed at the lowest renal ostium on purpose."]}
+        lines = OrderList.orderListLines(withDeployment(lambda d: d.update(tolerance=tolerance)))
+        first = lines.index(("text", "Deployment tolerance: each component moved up to 10.0 mm up and down its vessel "
+                                     "(the others where planned); it should hold 5.0 mm either way"))
+        self.assertTrue(lines[first - 1][1].startswith("left side: covered"))
+        self.assertEqual(lines[first + 1], ("ok", "main body: holds from 0.0 mm above to at least 10.0 mm below its "
+                                                  "planned position"))
+        self.assertEqual(lines[first + 2][0], "fail")
+        self.assertEqual(lines[first + 3], ("fail", "Finding (deployment tolerance): the left contralateral limb holds "
+                                                    "only 0.0 mm below (lower: type III endoleak risk) its planned "
+                                                    "position: less than the 5.0 mm deployment tolerance."))
+        self.assertEqual(lines[first + 4], ("warning", "Note: The main body's proximal edge is placed at the lowest "
+                                                       "renal ostium on purpose."))
+        notAssessed = OrderList.orderListLines(withDeployment(lambda d: d.update(tolerance={
+            "assessed": False, "notAssessedReason": "the graft does not pass at its planned position (x)"})))
+        self.assertIn(("indeterminate", "Deployment tolerance not assessed: the graft does not pass at its planned "
+                                        "position (x)."), notAssessed)
+        # An older report (no tolerance): no line.
+        self.assertFalse(any("tolerance" in text for kind, text in OrderList.orderListLines(
+            report("report-deployment.json"))))
+
     def test_DeploymentOffset_PlacesTheProximalEdgeBelowOrAbove(self):
         def moved(offset):
             site = 79.91357586890256  # the report's proximalSite.abscissaMm
