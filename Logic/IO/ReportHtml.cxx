@@ -9,6 +9,7 @@
 
 #include "Common/Format.h"
 #include "Common/Median.h"
+#include "Common/Text.h"
 #include "IO/EncodePng.h"
 #include "Pipeline/OrderListText.h"
 #include "Pipeline/PlanValues.h"
@@ -161,9 +162,16 @@ void Summary(const RepairPlan& plan, const std::map<std::string, PlanValue>& val
 {
   const DeviceSelection& s = plan.selection;
   out << "<h2>Summary</h2>\n<div class=\"summary\"><ul>";
-  out << "<li><b>Recommendation:</b> <span data-name=\"recommendedDevice\">"
-      << Escape(values.at("recommendedDevice").text) << "</span>; " << Escape(s.summary)
-      << "; within IFU: <span data-name=\"withinIfu\">" << values.at("withinIfu").text << "</span>";
+  // The device once, then its sizes and the IFU verdict the summary gives ("Excluder Conformable —
+  // main body 26 mm …; within IFU"), the return value withinIfu riding along in data-value.
+  const std::string device = values.at("recommendedDevice").text;
+  std::string summary = s.summary;
+  for (const std::string& prefix : { device + ": ", device + " (forced): " })
+    if (summary.rfind(prefix, 0) == 0)
+      summary = (prefix.find("forced") != std::string::npos ? "forced; " : "") + summary.substr(prefix.size());
+  out << "<li><b>Recommendation:</b> <span data-name=\"recommendedDevice\">" << Escape(device) << "</span> — "
+      << Escape(summary) << "<span data-name=\"withinIfu\" data-value=\"" << values.at("withinIfu").text
+      << "\"></span>";
   if (!s.reasons.empty())
   {
     out << "<ul>";
@@ -412,7 +420,7 @@ void StraightenedView(const StraightenedFigure& f, const char* side, std::ostrea
     out << "<line x1=\"" << C(-half - 3) << "\" x2=\"" << C(-half) << "\" y1=\"" << C(l.pathMm) << "\" y2=\""
         << C(l.pathMm) << "\" stroke=\"#06c\" stroke-width=\"0.5\"/><text x=\"" << C(half + 12) << "\" y=\""
         << C(l.pathMm + 1.0) << "\" font-size=\"3\" fill=\"#06c\" data-landmark=\"" << Escape(l.label) << "\">"
-        << Escape(l.label) << "</text>";
+        << Escape(IdentifierWords(l.label)) << "</text>";
   // The simulated components side by side, each in its colour, over its simulated extent.
   for (std::size_t k = 0; k < f.components.size(); ++k)
   {

@@ -308,6 +308,17 @@ def check_case(args, workdir, profile, case, phantom_args, screenshot_out):
            f"the DOM shows {name} as {expected!r}, with {returned[name]} as the return file has it",
            f"shown {texts}, data-value {full}")
     ok(returned["recommendedDevice"] in dom.stdout, "the recommendation is in the DOM text")
+    # Issue 47: the recommendation line names the device once and says "within IFU" once, in words.
+    line = re.search(r"<li><b>Recommendation:</b>(.*?)(<ul>|</li>)", dom.stdout, re.S)
+    text = re.sub(r"<[^>]*>", "", line.group(1)) if line else ""
+    device = returned["recommendedDevice"]
+    ok(line and text.count(device) == 1 and text.count("within IFU") <= 1 and "true" not in text
+       and names.full.get("withinIfu") == [returned["withinIfu"]],
+       "the recommendation line names the device once, its IFU verdict once, no 'true'", text)
+    # The straightened views' landmarks in words ("right renal ostium"), their names in data-landmark.
+    marks = re.findall(r'data-landmark="([^"]*)">([^<]*)<', dom.stdout)
+    ok(marks and all(not re.search(r"[a-z][A-Z]", shown) for _, shown in marks),
+       f"the straightened views label {len(marks)} landmarks in words", f"{marks[:4]}")
     if case == "wall-in-fat":
         ok(returned["recommendedDevice"] != "none" and all(float(returned[n]) > 0 for n in LEVELS),
               "wall in fat: a device is recommended and every (a)-(f) is measured (the comparison compares numbers)")
