@@ -38,7 +38,8 @@ inline std::string JoinWithCommas(const std::vector<std::string>& items)
 }
 
 /// A camelCase identifier in words, as a person reads it: "leftInternalIliac" → "left internal
-/// iliac", "aorta" → "aorta" (ASCII letters only are split and lowered).
+/// iliac", "rightAccessoryRenal" → "right accessory renal", "aorta" → "aorta" (ASCII capitals are
+/// split off and lowered). The one used for every name a person reads (vessels, landmarks, values).
 inline std::string IdentifierWords(const std::string& identifier)
 {
   std::string words;

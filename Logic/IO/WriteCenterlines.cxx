@@ -1,6 +1,5 @@
 #include "IO/WriteCenterlines.h"
 
-#include <cctype>
 #include <cstdio>
 #include <sstream>
 #include <utility>
@@ -17,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "Common/Text.h"
 #include "IO/WriteModel.h"
 #include "IO/WriteTextFile.h"
 
@@ -59,15 +59,6 @@ void WriteCenterlines(const CenterlineTree& tree, const std::string& path)
 namespace
 {
 
-/// A vessel's name in words: "rightAccessoryRenal" → "right accessory renal".
-std::string Words(const std::string& name)
-{
-  std::string words;
-  for (char c : name)
-    words += std::isupper(static_cast<unsigned char>(c)) ? std::string(" ") + char(std::tolower(c)) : std::string(1, c);
-  return words;
-}
-
 /// The landmarks to write (WriteCenterlines.h): the tree's, with the measured ones in place.
 std::vector<std::pair<Landmark, std::string>> LandmarksToWrite(const CenterlineTree& tree, const Measurements* m)
 {
@@ -79,7 +70,7 @@ std::vector<std::pair<Landmark, std::string>> LandmarksToWrite(const CenterlineT
                     m->site.source == ProximalSiteSource::Landmark
                       ? described(true, "")
                       : described(false, m->site.source == ProximalSiteSource::Renal
-                                           ? "the lower edge of the " + Words(m->site.renal) +
+                                           ? "the lower edge of the " + IdentifierWords(m->site.renal) +
                                                " artery's ostium, on the aortic centerline"
                                            : "the top of the aorta in view (no renal artery found)") });
   for (const Landmark& l : tree.landmarks)

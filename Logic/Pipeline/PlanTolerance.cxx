@@ -67,13 +67,11 @@ DeploymentTolerance AssessPlanTolerance(const RepairPlan& plan,
     body.holdsBelowMm = std::min(body.holdsBelowMm, slackDown + edgeRoomBelow[std::size_t(side)]);
     body.holdsAboveMm = std::min(body.holdsAboveMm, slackUp + edgeRoomAbove[std::size_t(side)]);
   }
-  // The plan's own fit check at its planned position, less the configuration's findings it
-  // carries (CheckGraftFit appends one line for each, last).
-  const std::size_t own =
-    plan.fitCheck.findings.size() - std::min(plan.fitCheck.findings.size(), context.configurationFindings.size());
-  const DisplacedCheck planned{ own == 0 && plan.fitCheck.Complete(),
-                                own == 0 ? std::string() : plan.fitCheck.findings.front(), false };
+  // The planned graft judged on the fit check's own findings (the configuration's are the plan's,
+  // not a displacement's): no deployment, only the check.
   context.configurationFindings.clear();
+  const FitCheck own = CheckGraftFit(plan.graft, plan.measurements, plan.centerlines, &plan.vesselWall, context);
+  const DisplacedCheck planned{ own.Passed(), own.findings.empty() ? std::string() : own.findings.front(), false };
   const auto check = [&](const DeviceConfiguration& moved, double shiftMm) -> DisplacedCheck
   {
     try

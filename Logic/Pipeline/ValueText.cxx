@@ -1,10 +1,10 @@
 #include "Pipeline/ValueText.h"
 
-#include <cctype>
 #include <cmath>
 #include <map>
 
 #include "Common/Format.h"
+#include "Common/Text.h"
 
 namespace sgp
 {
@@ -59,14 +59,7 @@ std::string ValueLabel(const std::string& name)
   const auto found = words.find(name);
   if (found != words.end())
     return found->second;
-  std::string spaced;
-  for (const char c : name)
-  {
-    if (std::isupper(static_cast<unsigned char>(c)))
-      spaced += ' ';
-    spaced += char(std::tolower(static_cast<unsigned char>(c)));
-  }
-  return spaced;
+  return IdentifierWords(name);
 }
 
 std::string ClinicalText(double value, const std::string& unit)
