@@ -1,5 +1,7 @@
 #include "PrintPlanSummary.h"
 
+#include "Common/Text.h"
+
 #include <cmath>
 
 #include "Common/Format.h"
@@ -83,8 +85,8 @@ void PrintPlanSummary(const RepairPlan& plan, const std::string& acmMode, std::o
       out << "Simulated graft (" << plan.selection.families[plan.simulatedFamily].family
           << (check.Complete() ? "" : ", its main body only: partial plan") << "): proximal seal "
           << seal(check.proximalSealLengthMm) << ", iliac seal right " << seal(check.rightIliacSealLengthMm)
-          << " / left " << seal(check.leftIliacSealLengthMm) << ", covered ostia: " << check.CoveredOstia()
-          << "; fit check "
+          << " / left " << seal(check.leftIliacSealLengthMm)
+          << ", covered ostia: " << IdentifierWords(check.CoveredOstia()) << "; fit check "
           << (!check.Complete()
                 ? (check.findings.empty() ? "of the proximal part passed" : "of the proximal part FAILED")
               : check.Passed() ? "passed"

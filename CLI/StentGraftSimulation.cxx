@@ -53,6 +53,7 @@ int main(int argc, char* argv[])
     paths.diameterProfile = outputDiameterProfile;
     paths.report = outputReport;
     paths.reportHtml = outputReportHtml;
+    paths.configuration = outputConfiguration;
     paths.straightenedVolume = outputStraightenedVolume;
     paths.straightenedLeftVolume = outputStraightenedLeftVolume;
     paths.returnParameterFile = returnParameterFile;
@@ -106,6 +107,8 @@ int main(int argc, char* argv[])
       params.catalog = ReadDeviceCatalog(run.deviceCatalog);
       if (!params.selection.forcedDevice.empty())
         ParseForcedDevice(params.selection.forcedDevice, params.catalog);
+      if (!configuration.empty())
+        params.selection.configuration = ReadGivenConfiguration(configuration, params.selection, params.catalog);
     }
 
     SlicerProgress progress(std::cout, { { "ReadVolume", 2.0 },
@@ -166,6 +169,11 @@ int main(int argc, char* argv[])
     PlanOutputPaths rest = paths;
     if (wallLabelMapWritten.valid())
       rest.wallLabelMap.clear(); // being written on the second core
+    if (!rest.configuration.empty() && !ConfigurationNotWritten(plan).empty())
+    {
+      PrintWarnings({ ConfigurationNotWritten(plan) }, std::cerr);
+      rest.configuration.clear();
+    }
     WritePlanOutputs(plan, rest, run, outputs);
     for (std::future<void>* written : { &labelMapWritten, &wallLabelMapWritten })
       if (written->valid())

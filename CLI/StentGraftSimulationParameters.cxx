@@ -4,6 +4,7 @@
 #include "Common/CheckRange.h"
 #include "Common/Errors.h"
 #include "Common/Format.h"
+#include "IO/ConfigurationFile.h"
 
 namespace sgp
 {
@@ -215,6 +216,24 @@ DeviceSelectionParams MakeDeviceSelectionParams(const std::string& device,
   params.ipsilateralSide = ParseIpsilateralSide(ipsilateralSide, "ipsilateralSide");
   ValidateDeviceSelectionParams(params);
   return params;
+}
+
+GivenConfiguration ReadGivenConfiguration(const std::string& path,
+                                          const DeviceSelectionParams& selection,
+                                          const DeviceCatalog& catalog)
+{
+  if (!selection.forcedDevice.empty())
+    throw InputError("configuration (" + path + ") and device (" + selection.forcedDevice +
+                     ") are both given; expected one: the configuration names its family and sizes.");
+  GivenConfiguration given = ReadConfiguration(path);
+  const ResolvedConfiguration resolved = ResolveGivenConfiguration(given, catalog);
+  if (resolved.mainBodySide >= 0 && selection.ipsilateralSide != IpsilateralSide::Auto &&
+      (selection.ipsilateralSide == IpsilateralSide::Right) != (resolved.mainBodySide == 0))
+    throw InputError(
+      std::string("ipsilateralSide is ") + (selection.ipsilateralSide == IpsilateralSide::Right ? "right" : "left") +
+      " but the configuration (" + path + ") gives mainBodySide " + (resolved.mainBodySide == 0 ? "right" : "left") +
+      "; expected one side (leave ipsilateralSide auto).");
+  return given;
 }
 
 double CheckDeploymentOffset(double deploymentOffsetMm)

@@ -68,6 +68,14 @@ DeviceSelectionParams MakeDeviceSelectionParams(const std::string& device,
                                                 const std::vector<double>& limbOversizingRange,
                                                 const std::string& ipsilateralSide = "auto");
 
+/// The surgeon's configuration file (--configuration), read and resolved against `catalog` at once so
+/// that a bad code fails before any heavy work. \throws InputError with --device also given, when the
+/// configuration's mainBodySide contradicts a non-auto ipsilateralSide, or as ReadConfiguration and
+/// ResolveGivenConfiguration.
+GivenConfiguration ReadGivenConfiguration(const std::string& path,
+                                          const DeviceSelectionParams& selection,
+                                          const DeviceCatalog& catalog);
+
 /// The deployment offset, mm. \throws InputError "deploymentOffsetMm is … mm; expected -30.0 to
 /// 60.0 mm." outside that range.
 double CheckDeploymentOffset(double deploymentOffsetMm);

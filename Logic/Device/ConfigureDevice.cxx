@@ -9,6 +9,7 @@
 #include "Common/Format.h"
 #include "Common/Text.h"
 #include "Device/CriterionCheck.h"
+#include "Device/GivenConfiguration.h"
 #include "Device/LimbOptions.h"
 
 namespace sgp
@@ -127,6 +128,7 @@ void LandingFindings(const DeviceFamily& family,
                      const ConfigurationAnatomy& anatomy,
                      int side,
                      const SideOption& option,
+                     bool given,
                      DeviceConfiguration& c)
 {
   const std::string name = SideName(side);
@@ -148,6 +150,16 @@ void LandingFindings(const DeviceFamily& family,
           " above the internal iliac origin), needs ≥ " + CompactNumber(sealMin) + " mm; " + lands,
         "an iliac extension into the " + name +
           " external iliac artery that covers the internal iliac (embolise it first), or an iliac branch device" });
+  else if (given && option.landing == Landing::Covers)
+    c.findings.push_back({ "internalIliacCovered", side,
+                           "the " + name + " side as given ends " + Mm(option.distalMm - hi) + " past the " + name +
+                             " internal iliac ostium: it covers the ostium by " + Mm(option.distalMm - hi),
+                           "a shorter limb or extension, or placing it higher (deeper in what it goes into)" });
+  else if (given && option.landing == Landing::Short)
+    c.findings.push_back({ "iliacSealShort", side,
+                           "the " + name + " side as given ends " + Mm(lo - option.distalMm) + " short of " +
+                             family.name + "'s " + CompactNumber(sealMin) + " mm minimum iliac seal (" + Mm(seal) + ")",
+                           "a longer limb, an iliac extension, or placing it lower" });
   else if (option.landing == Landing::Covers)
     c.findings.push_back({ "internalIliacCovered", side,
                            "no " + family.name + " combination on the " + name +
@@ -163,12 +175,37 @@ void LandingFindings(const DeviceFamily& family,
                            "an iliac extension, or a longer limb from another family" });
 }
 
+/// A given side's overlaps outside the family's window: under the minimum (the junction may come
+/// apart: a type III endoleak) or over the maximum the catalogue gives.
+void OverlapFindings(const DeviceFamily& family, int side, const SideOption& option, DeviceConfiguration& c)
+{
+  const IfuLimit& window = family.junctions.overlapMm;
+  for (std::size_t k = 0; k < option.parts.size(); ++k)
+  {
+    const double ov = option.overlapMm[k];
+    const std::string part = option.parts[k].RoleText() + " " + option.parts[k].item.CodeText();
+    if (ov < window.min - 1e-9)
+      c.findings.push_back({ "overlapShort", side,
+                             "the " + part + " as given overlaps " + Mm(ov) + ", under " + family.name + "'s " +
+                               CompactNumber(window.min) +
+                               " mm minimum overlap (the junction may come apart: a "
+                               "type III endoleak)",
+                             "insert it deeper, or a longer component" });
+    else if (std::isfinite(window.max) && ov > window.max + 1e-9)
+      c.findings.push_back({ "overlapLong", side,
+                             "the " + part + " as given overlaps " + Mm(ov) + ", over " + family.name + "'s " +
+                               CompactNumber(window.max) + " mm maximum overlap",
+                             "insert it less deep, or a shorter component" });
+  }
+}
+
 /// Completes the configuration of one main body on both sides; nullopt when a side has no option.
 std::optional<Candidate> ConfigureBody(const DeviceFamily& family,
                                        const CatalogueComponent& body,
                                        const std::array<double, 2>& landingDiameter,
                                        const ConfigurationAnatomy& anatomy,
-                                       const DeviceConfiguration& base)
+                                       const DeviceConfiguration& base,
+                                       const ResolvedConfiguration* given)
 {
   const double tolerance = base.deploymentToleranceMm;
   Candidate candidate;
@@ -180,18 +217,26 @@ std::optional<Candidate> ConfigureBody(const DeviceFamily& family,
   c.gateClearanceMm = anatomy.targetToBifurcationMm - body.gateEndMm;
   c.components.push_back(Place(OrderRole::MainBody, body, ipsi, 0.0));
   std::optional<SideOption> bodyAlone;
-  if (body.distalDiameterMm == landingDiameter[ipsi])
+  if (body.distalDiameterMm == landingDiameter[ipsi] || (given && given->bodyLegLandsAlone))
   {
     bodyAlone = BodyLegOption(body.lengthMm, c.landingLowMm[ipsi], c.landingHighMm[ipsi], tolerance);
   }
-  const std::optional<SideOption> ipsiSide =
-    BestSide(LimbOptions(family, OrderRole::IpsilateralLimb, ipsi, body.flowDividerMm, body.lengthMm,
-                         landingDiameter[ipsi], c.landingLowMm[ipsi], c.landingHighMm[ipsi], tolerance),
-             bodyAlone);
+  // A side the surgeon gave is completed exactly so; the others by the rule.
+  const auto complete = [&](OrderRole role, int side, double stubEnd, const std::optional<SideOption>& alone)
+  {
+    if (given && given->limb[std::size_t(side)].Given())
+      return std::optional<SideOption>(
+        GivenSideOption(family, role, side, body.flowDividerMm, stubEnd, given->limb[std::size_t(side)],
+                        given->extension[std::size_t(side)], c.landingLowMm[side], c.landingHighMm[side], tolerance));
+    return BestSide(LimbOptions(family, role, side, body.flowDividerMm, stubEnd, landingDiameter[side],
+                                c.landingLowMm[side], c.landingHighMm[side], tolerance),
+                    alone);
+  };
+  const std::optional<SideOption> ipsiSide = given && given->bodyLegLandsAlone
+                                               ? bodyAlone
+                                               : complete(OrderRole::IpsilateralLimb, ipsi, body.lengthMm, bodyAlone);
   const std::optional<SideOption> contraSide =
-    BestSide(LimbOptions(family, OrderRole::ContralateralLimb, contra, body.flowDividerMm, body.gateEndMm,
-                         landingDiameter[contra], c.landingLowMm[contra], c.landingHighMm[contra], tolerance),
-             std::nullopt);
+    complete(OrderRole::ContralateralLimb, contra, body.gateEndMm, std::nullopt);
   if (!ipsiSide || !contraSide)
     return std::nullopt;
   const std::pair<int, const SideOption*> sides[2] = { { ipsi, &*ipsiSide }, { contra, &*contraSide } };
@@ -218,7 +263,11 @@ std::optional<Candidate> ConfigureBody(const DeviceFamily& family,
     c.coveredLengthMm[side] = option->distalMm;
     c.sealLengthMm[side] = option->distalMm - anatomy.SealFromMm(side);
     c.marginToInternalIliacMm[side] = c.landingHighMm[side] - option->distalMm;
-    LandingFindings(family, anatomy, side, *option, c);
+    const bool givenSide =
+      given && (given->limb[std::size_t(side)].Given() || (side == ipsi && given->bodyLegLandsAlone));
+    LandingFindings(family, anatomy, side, *option, givenSide, c);
+    if (givenSide)
+      OverlapFindings(family, side, *option, c);
   }
   const double clearance = family.junctions.gateClearanceMm.min;
   if (c.gateClearanceMm < (std::isnan(clearance) ? 0.0 : clearance))
@@ -281,7 +330,8 @@ DeviceConfiguration ConfigureWithoutAlternatives(const DeviceFamily& family,
                                                  const ConfigurationAnatomy& anatomy,
                                                  const SideChoice& ipsilateral,
                                                  double toleranceMm,
-                                                 std::vector<const CatalogueComponent*>& bodies)
+                                                 std::vector<const CatalogueComponent*>& bodies,
+                                                 const ResolvedConfiguration* given)
 {
   DeviceConfiguration base;
   base.deploymentToleranceMm = toleranceMm;
@@ -297,8 +347,12 @@ DeviceConfiguration ConfigureWithoutAlternatives(const DeviceFamily& family,
       return Unknown(base, std::string("the ") + SideName(side) +
                              " internal iliac origin was not found, so the landing zone's lower end is not known");
   for (const CatalogueComponent* body : family.ComponentsOf(ComponentRole::MainBody))
-    if (body->diameterMm == chosen.mainBodyMm && body->GeometryKnown())
+    if (given ? body == given->mainBody.item && body->GeometryKnown()
+              : body->diameterMm == chosen.mainBodyMm && body->GeometryKnown())
       bodies.push_back(body);
+  if (given && bodies.empty())
+    return Unknown(base, "the catalogue gives no length, flow divider and contralateral gate position for the " +
+                           given->mainBody.item->CodeText() + " " + family.name + " main body given");
   if (bodies.empty())
     return Unknown(base, "the catalogue gives no length, flow divider and contralateral gate position for the " +
                            CompactNumber(chosen.mainBodyMm) + " mm " + family.name +
@@ -322,6 +376,13 @@ DeviceConfiguration ConfigureWithoutAlternatives(const DeviceFamily& family,
   std::vector<ConfigurationFinding> sizeFindings;
   for (int side = 0; side < 2; ++side)
   {
+    if (given && given->limb[std::size_t(side)].Given())
+    {
+      const ResolvedComponent& last = given->extension[std::size_t(side)].Given() ? given->extension[std::size_t(side)]
+                                                                                  : given->limb[std::size_t(side)];
+      landing[side] = last.item->distalDiameterMm;
+      continue;
+    }
     landing[side] = LandingDiameter(family, chosen, anatomy, side, sizeFindings);
     if (!std::isfinite(landing[side]))
       return Unknown(base, std::string("no ") + SideName(side) + " limb was sized (the iliac diameter is not known)");
@@ -335,7 +396,7 @@ DeviceConfiguration ConfigureWithoutAlternatives(const DeviceFamily& family,
   std::optional<Candidate> best;
   for (const CatalogueComponent* body : bodies)
   {
-    std::optional<Candidate> candidate = ConfigureBody(family, *body, landing, anatomy, base);
+    std::optional<Candidate> candidate = ConfigureBody(family, *body, landing, anatomy, base, given);
     if (candidate && (!best || candidate->score < best->score))
       best = candidate;
   }
@@ -385,7 +446,7 @@ void LengthAlternatives(const DeviceFamily& family,
       moved.targetToInternalIliacMm[side] += shift;
       std::vector<const CatalogueComponent*> bodies;
       const DeviceConfiguration other =
-        ConfigureWithoutAlternatives(family, chosen, moved, ipsilateral, c.deploymentToleranceMm, bodies);
+        ConfigureWithoutAlternatives(family, chosen, moved, ipsilateral, c.deploymentToleranceMm, bodies, nullptr);
       if (!other.configured)
         continue;
       for (OrderRole role : { OrderRole::IpsilateralLimb, OrderRole::ContralateralLimb, OrderRole::IliacExtension })
@@ -569,9 +630,25 @@ DeviceConfiguration ConfigureDevice(const DeviceFamily& family,
     throw InputError("deploymentToleranceMm is " + FormatNumber(deploymentToleranceMm) + "; expected ≥ 0 mm.");
   std::vector<const CatalogueComponent*> bodies;
   DeviceConfiguration c =
-    ConfigureWithoutAlternatives(family, chosen, anatomy, ipsilateral, deploymentToleranceMm, bodies);
+    ConfigureWithoutAlternatives(family, chosen, anatomy, ipsilateral, deploymentToleranceMm, bodies, nullptr);
   if (c.configured)
     LengthAlternatives(family, chosen, anatomy, ipsilateral, c);
+  return c;
+}
+
+DeviceConfiguration ConfigureGivenDevice(const DeviceFamily& family,
+                                         const ResolvedConfiguration& given,
+                                         const ChosenDiameters& chosen,
+                                         const ConfigurationAnatomy& anatomy,
+                                         const SideChoice& ipsilateral,
+                                         double deploymentToleranceMm)
+{
+  if (!(deploymentToleranceMm >= 0.0))
+    throw InputError("deploymentToleranceMm is " + FormatNumber(deploymentToleranceMm) + "; expected ≥ 0 mm.");
+  std::vector<const CatalogueComponent*> bodies;
+  DeviceConfiguration c =
+    ConfigureWithoutAlternatives(family, chosen, anatomy, ipsilateral, deploymentToleranceMm, bodies, &given);
+  c.given = true;
   return c;
 }
 

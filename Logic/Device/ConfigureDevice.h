@@ -241,6 +241,8 @@ struct DeviceConfiguration
   double flowDividerMm = 0.0;                                ///< f
   /// The deployment tolerance the limbs were placed for (LimbOptions.h), mm.
   double deploymentToleranceMm = 0.0;
+  /// Given by the surgeon (ConfigureGivenDevice), not chosen by the plan.
+  bool given = false;
   std::vector<ConfigurationFinding> findings;
   /// Remarks that do not fail the plan (a narrow but not extremely narrow distal aorta, a crotch
   /// or gate clearance the catalogue does not give).
@@ -279,5 +281,23 @@ DeviceConfiguration ConfigureDevice(const DeviceFamily& family,
                                     const ConfigurationAnatomy& anatomy,
                                     const SideChoice& ipsilateral,
                                     double deploymentToleranceMm = DeploymentToleranceMm);
+
+struct ResolvedConfiguration;
+
+/// The surgeon's configuration (GivenConfiguration.h) on this anatomy: exactly its main body on
+/// its side (`ipsilateral`: the given side, or the plan's choice), each side it gives with exactly
+/// its limb and extension at the positions it gives (the others placed by the rule, LimbOptions.h),
+/// each side it leaves out completed by the rule; judged by the same constraints, with the given
+/// sides' findings phrased for what was given and an overlap outside the family's window a finding
+/// ("overlapShort", "overlapLong"). `given` was resolved against the catalogue holding `family`;
+/// `chosen` gives the diameters the sides left out land with. `given` true, no alternatives.
+/// \throws InputError for a negative tolerance, or a given position a part cannot take
+/// (GivenSideOption).
+DeviceConfiguration ConfigureGivenDevice(const DeviceFamily& family,
+                                         const ResolvedConfiguration& given,
+                                         const ChosenDiameters& chosen,
+                                         const ConfigurationAnatomy& anatomy,
+                                         const SideChoice& ipsilateral,
+                                         double deploymentToleranceMm = DeploymentToleranceMm);
 
 } // namespace sgp

@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "Common/Errors.h"
+#include "Common/Format.h"
+#include "Device/CriterionCheck.h"
+
 namespace sgp
 {
 namespace
@@ -14,6 +18,11 @@ constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double OverlapGridMm = 0.25;
 /// Two margins this close are alike (the ranges are reported to 0.1 mm).
 constexpr double SameMarginMm = 0.05;
+
+const char* SideName(int side)
+{
+  return side == 0 ? "right" : "left";
+}
 
 /// a + b·x.
 struct Line
@@ -173,6 +182,139 @@ std::pair<double, double> ExtensionOverlap(double stubEnd,
   return { ov2, value(ov2) };
 }
 
+/// The option of a single limb inserted `ov` into a stub ending at `stubEndMm`.
+SideOption SingleLimb(OrderRole role,
+                      const CatalogueComponent& limb,
+                      int side,
+                      double stubEndMm,
+                      double ov,
+                      double ovLo,
+                      double ovHi,
+                      double lo,
+                      double hi,
+                      double toleranceMm)
+{
+  SideOption o;
+  o.parts.push_back(Place(role, limb, side, stubEndMm - ov));
+  o.overlapMm.push_back(ov);
+  o.overlapMaxMm.push_back(ovHi);
+  o.distalMm = o.parts.back().distalMm;
+  o.landing = Classify(o.distalMm, lo, hi);
+  o.holds.push_back(LandingHold(o.distalMm, lo, hi, ov, ovLo, ovHi));
+  o.margin = MarginOf(o.holds, o.landing, toleranceMm);
+  return o;
+}
+
+/// Positions the surgeon fixed (NaN: free), mm.
+struct FixedPositions
+{
+  double limbOverlapMm = NaN;
+  double extensionOverlapMm = NaN;
+  double distalMm = NaN; ///< the extension's distal edge along the path
+};
+
+/// A limb of length L1 in a stub ending at `stubEnd` (overlap window [ovLo, ovHi]) and an extension
+/// of L2 in it ([exLo, exHi]): the overlaps (ov1, ov2) placed as the file comment says, keeping
+/// what `fixed` gives.
+std::pair<double, double> LimbAndExtensionOverlaps(double stubEnd,
+                                                   double L1,
+                                                   double L2,
+                                                   double ovLo,
+                                                   double ovHi,
+                                                   double exLo,
+                                                   double exHi,
+                                                   double lo,
+                                                   double hi,
+                                                   double tol,
+                                                   const FixedPositions& fixed)
+{
+  // The extension's overlap for the limb's v1 and what the placement is worth: fixed, from the
+  // fixed distal edge, or solved.
+  const auto extensionFor = [&](double v1) -> std::pair<double, double>
+  {
+    double v2 = fixed.extensionOverlapMm;
+    if (std::isnan(v2) && std::isfinite(fixed.distalMm))
+      v2 = stubEnd - v1 + L1 + L2 - fixed.distalMm;
+    if (std::isnan(v2))
+      return ExtensionOverlap(stubEnd, L1, L2, v1, ovLo, ovHi, exLo, exHi, lo, hi, tol);
+    const double distal = stubEnd - v1 + L1 - v2 + L2;
+    return { v2, PlacementValue({ LimbAboveExtensionHold(v1, ovLo, ovHi, v2, exLo, exHi),
+                                  LandingHold(distal, lo, hi, v2, exLo, exHi) },
+                                distal, lo, hi, tol) };
+  };
+  // Without a margin (or where the side cannot land in its window): both overlaps as shallow as
+  // possible gives the lowest edge; deepen the limb's first, then the extension's, until the edge
+  // is not past W_hi.
+  const double deepest = stubEnd - ovLo + L1 - exLo + L2;
+  double excess = std::max(0.0, deepest - hi);
+  double ov1 = ovLo + std::min(excess, ovHi - ovLo);
+  excess -= ov1 - ovLo;
+  double ov2 = exLo + std::min(excess, exHi - exLo);
+  if (std::isfinite(fixed.limbOverlapMm))
+    ov1 = fixed.limbOverlapMm;
+  if (std::isfinite(fixed.extensionOverlapMm) || std::isfinite(fixed.distalMm))
+    ov2 = extensionFor(ov1).first;
+  // With one: the limb's overlap on a grid (and the rule's), the extension's solved for each.
+  std::vector<double> grid{ ov1 };
+  if (std::isnan(fixed.limbOverlapMm))
+  {
+    for (double v = ovLo; v < ovHi; v += OverlapGridMm)
+      grid.push_back(v);
+    grid.push_back(ovHi);
+  }
+  double bestMargin = -std::numeric_limits<double>::infinity(), bestEdge = NaN, best1 = ov1, best2 = ov2;
+  for (double v1 : grid)
+  {
+    const auto [v2, margin] = extensionFor(v1);
+    const double edge = stubEnd - v1 + L1 - v2 + L2;
+    const bool better =
+      margin > bestMargin + 1e-9 ||
+      (margin > bestMargin - 1e-9 && (edge > bestEdge + 1e-9 || (edge > bestEdge - 1e-9 && v1 > best1)));
+    if (better)
+    {
+      bestMargin = margin;
+      bestEdge = edge;
+      best1 = v1;
+      best2 = v2;
+    }
+  }
+  if (bestMargin >= -1e-9)
+  {
+    ov1 = best1;
+    ov2 = best2;
+  }
+  return { ov1, ov2 };
+}
+
+/// The option of a limb inserted ov1 and an extension inserted ov2 into it.
+SideOption LimbAndExtension(OrderRole role,
+                            const CatalogueComponent& limb,
+                            const CatalogueComponent& extension,
+                            int side,
+                            double stubEndMm,
+                            double ov1,
+                            double ov2,
+                            double ovLo,
+                            double ovHi,
+                            double exLo,
+                            double exHi,
+                            double lo,
+                            double hi,
+                            double toleranceMm)
+{
+  SideOption o;
+  o.parts.push_back(Place(role, limb, side, stubEndMm - ov1));
+  o.parts.push_back(Place(OrderRole::IliacExtension, extension, side, o.parts[0].distalMm - ov2));
+  o.overlapMm = { ov1, ov2 };
+  o.overlapMaxMm = { ovHi, exHi };
+  o.distalMm = o.parts.back().distalMm;
+  o.landing = Classify(o.distalMm, lo, hi);
+  o.holds = { LimbAboveExtensionHold(ov1, ovLo, ovHi, ov2, exLo, exHi),
+              LandingHold(o.distalMm, lo, hi, ov2, exLo, exHi) };
+  o.margin = MarginOf(o.holds, o.landing, toleranceMm);
+  return o;
+}
+
 } // namespace
 
 Landing Classify(double distal, double lo, double hi)
@@ -217,15 +359,7 @@ std::vector<SideOption> LimbOptions(const DeviceFamily& family,
       continue;
     // Distal edge = stubEnd − ov + L, ov ∈ [ovLo, ovHi].
     const double ov = SingleLimbOverlap(stubEndMm, limb->lengthMm, ovLo, ovHi, lo, hi, toleranceMm);
-    SideOption o;
-    o.parts.push_back(Place(role, *limb, side, stubEndMm - ov));
-    o.overlapMm.push_back(ov);
-    o.overlapMaxMm.push_back(ovHi);
-    o.distalMm = o.parts.back().distalMm;
-    o.landing = Classify(o.distalMm, lo, hi);
-    o.holds.push_back(LandingHold(o.distalMm, lo, hi, ov, ovLo, ovHi));
-    o.margin = MarginOf(o.holds, o.landing, toleranceMm);
-    options.push_back(o);
+    options.push_back(SingleLimb(role, *limb, side, stubEndMm, ov, ovLo, ovHi, lo, hi, toleranceMm));
   }
   std::sort(lengths.begin(), lengths.end());
   double lengthStep = 0.0;
@@ -251,51 +385,10 @@ std::vector<SideOption> LimbOptions(const DeviceFamily& family,
       const auto [exLo, exHi] = OverlapWindow(overlap, std::min(L1, L2 - SameEdgeMm));
       if (exHi < exLo)
         continue;
-      // Without a margin (or where the side cannot land in its window): both overlaps as shallow
-      // as possible gives the lowest edge; deepen the limb's first, then the extension's, until
-      // the edge is not past W_hi.
-      const double deepest = stubEndMm - ovLo + L1 - exLo + L2;
-      double excess = std::max(0.0, deepest - hi);
-      double ov1 = ovLo + std::min(excess, ovHi - ovLo);
-      excess -= ov1 - ovLo;
-      double ov2 = exLo + std::min(excess, exHi - exLo);
-      // With one: the limb's overlap on a grid (and the rule's), the extension's solved for each.
-      std::vector<double> grid{ ov1 };
-      for (double v = ovLo; v < ovHi; v += OverlapGridMm)
-        grid.push_back(v);
-      grid.push_back(ovHi);
-      double bestMargin = -std::numeric_limits<double>::infinity(), bestEdge = NaN, best1 = ov1, best2 = ov2;
-      for (double v1 : grid)
-      {
-        const auto [v2, margin] = ExtensionOverlap(stubEndMm, L1, L2, v1, ovLo, ovHi, exLo, exHi, lo, hi, toleranceMm);
-        const double edge = stubEndMm - v1 + L1 - v2 + L2;
-        const bool better =
-          margin > bestMargin + 1e-9 ||
-          (margin > bestMargin - 1e-9 && (edge > bestEdge + 1e-9 || (edge > bestEdge - 1e-9 && v1 > best1)));
-        if (better)
-        {
-          bestMargin = margin;
-          bestEdge = edge;
-          best1 = v1;
-          best2 = v2;
-        }
-      }
-      if (bestMargin >= -1e-9)
-      {
-        ov1 = best1;
-        ov2 = best2;
-      }
-      SideOption o;
-      o.parts.push_back(Place(role, single.parts[0].item, side, stubEndMm - ov1));
-      o.parts.push_back(Place(OrderRole::IliacExtension, *extension, side, o.parts[0].distalMm - ov2));
-      o.overlapMm = { ov1, ov2 };
-      o.overlapMaxMm = { ovHi, exHi };
-      o.distalMm = o.parts.back().distalMm;
-      o.landing = Classify(o.distalMm, lo, hi);
-      o.holds = { LimbAboveExtensionHold(ov1, ovLo, ovHi, ov2, exLo, exHi),
-                  LandingHold(o.distalMm, lo, hi, ov2, exLo, exHi) };
-      o.margin = MarginOf(o.holds, o.landing, toleranceMm);
-      options.push_back(o);
+      const auto [ov1, ov2] =
+        LimbAndExtensionOverlaps(stubEndMm, L1, L2, ovLo, ovHi, exLo, exHi, lo, hi, toleranceMm, {});
+      options.push_back(LimbAndExtension(role, single.parts[0].item, *extension, side, stubEndMm, ov1, ov2, ovLo, ovHi,
+                                         exLo, exHi, lo, hi, toleranceMm));
     }
   return options;
 }
@@ -336,6 +429,64 @@ std::optional<SideOption> BestSide(std::vector<SideOption> options, const std::o
     return a.distalMm > b.distalMm + 1e-9;
   };
   return *std::min_element(options.begin(), options.end(), better);
+}
+
+SideOption GivenSideOption(const DeviceFamily& family,
+                           OrderRole role,
+                           int side,
+                           double stubStartMm,
+                           double stubEndMm,
+                           const ResolvedComponent& limb,
+                           const ResolvedComponent& extension,
+                           double lo,
+                           double hi,
+                           double toleranceMm)
+{
+  const IfuLimit& overlap = family.junctions.overlapMm;
+  const CatalogueComponent& L = *limb.item;
+  const double stub = stubEndMm - stubStartMm;
+  const std::string into = role == OrderRole::ContralateralLimb ? "the contralateral gate" : "the ipsilateral leg";
+  auto [ovLo, ovHi] = OverlapWindow(overlap, std::min(stub, L.lengthMm - SameEdgeMm));
+  ovHi = std::max(ovHi, ovLo); // a window the catalogue cannot meet: its holds say so
+  // Where the limb cannot go: not into what it joins, or deeper than it is long.
+  const auto check = [&](double ov, const ResolvedComponent& part, double room, const std::string& what)
+  {
+    if (ov <= 0.0)
+      throw InputError(part.where + ": the " + std::string(SideName(side)) + " " + part.item->CodeText() + " (" +
+                       CompactNumber(part.item->lengthMm) + " mm) placed there overlaps " + what + " by " +
+                       FormatNumber(ov) + " mm: it cannot reach it; expected an overlap of " +
+                       FormatNumber(overlap.min) + " to " + FormatNumber(room) +
+                       " mm, or no position, to let the plan place it.");
+    if (ov > room + 1e-6)
+      throw InputError(part.where + ": the " + std::string(SideName(side)) + " " + part.item->CodeText() +
+                       " placed there goes " + FormatNumber(ov) + " mm into " + what + ", deeper than its " +
+                       FormatNumber(room) + " mm; expected an overlap of " + FormatNumber(overlap.min) + " to " +
+                       FormatNumber(room) + " mm, or no position, to let the plan place it.");
+  };
+  const double limbRoom = std::min(stub, L.lengthMm - SameEdgeMm);
+  if (!extension.Given())
+  {
+    double ov = limb.overlapMm;
+    if (std::isfinite(limb.distalEdgeAboveInternalIliacMm))
+      ov = stubEndMm + L.lengthMm - (hi - limb.distalEdgeAboveInternalIliacMm);
+    if (std::isnan(ov))
+      ov = SingleLimbOverlap(stubEndMm, L.lengthMm, ovLo, ovHi, lo, hi, toleranceMm);
+    check(ov, limb, limbRoom, into);
+    return SingleLimb(role, L, side, stubEndMm, ov, ovLo, ovHi, lo, hi, toleranceMm);
+  }
+  const CatalogueComponent& E = *extension.item;
+  auto [exLo, exHi] = OverlapWindow(overlap, std::min(L.lengthMm, E.lengthMm - SameEdgeMm));
+  exHi = std::max(exHi, exLo);
+  FixedPositions fixed;
+  fixed.limbOverlapMm = limb.overlapMm;
+  fixed.extensionOverlapMm = extension.overlapMm;
+  if (std::isfinite(extension.distalEdgeAboveInternalIliacMm))
+    fixed.distalMm = hi - extension.distalEdgeAboveInternalIliacMm;
+  const auto [ov1, ov2] =
+    LimbAndExtensionOverlaps(stubEndMm, L.lengthMm, E.lengthMm, ovLo, ovHi, exLo, exHi, lo, hi, toleranceMm, fixed);
+  check(ov1, limb, limbRoom, into);
+  check(ov2, extension, std::min(L.lengthMm, E.lengthMm - SameEdgeMm), "the limb");
+  return LimbAndExtension(role, L, E, side, stubEndMm, ov1, ov2, ovLo, ovHi, exLo, exHi, lo, hi, toleranceMm);
 }
 
 } // namespace sgp

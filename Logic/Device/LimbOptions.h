@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "Device/ConfigureDevice.h"
+#include "Device/GivenConfiguration.h"
 
 namespace sgp
 {
@@ -102,6 +103,24 @@ std::vector<SideOption> LimbOptions(const DeviceFamily& family,
                                     double lo,
                                     double hi,
                                     double toleranceMm);
+
+/// The side completed with the surgeon's `limb` (given) and `extension` (given or not), each at its
+/// given position (GivenConfiguration.h: an overlap, or the last part's distal edge above the
+/// internal iliac ostium, i.e. `hi` − that) or, where none is given, placed for the tolerance as
+/// the file comment says — whatever the landing diameter; its holds measured against the family's
+/// overlap windows (an overlap given outside them: a negative range). \throws InputError naming the
+/// component's entry when a position leaves a part not inserted at all (overlap ≤ 0: it cannot
+/// reach its gate, leg or limb) or deeper than what it goes into allows.
+SideOption GivenSideOption(const DeviceFamily& family,
+                           OrderRole role,
+                           int side,
+                           double stubStartMm,
+                           double stubEndMm,
+                           const ResolvedComponent& limb,
+                           const ResolvedComponent& extension,
+                           double lo,
+                           double hi,
+                           double toleranceMm);
 
 /// The body's own leg landing on its side (its end at `legEndMm`), with its hold range.
 SideOption BodyLegOption(double legEndMm, double lo, double hi, double toleranceMm);

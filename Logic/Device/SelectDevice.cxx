@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 #include <tuple>
 
 #include "Common/CheckRange.h"
@@ -219,7 +220,8 @@ FamilyEvaluation EvaluateFamily(const SizingAnatomy& anatomy,
                                 const DeviceCatalog& catalog,
                                 int index,
                                 const DeviceSelectionParams& p,
-                                double forcedDiameterMm)
+                                double forcedDiameterMm,
+                                const ResolvedConfiguration* given = nullptr)
 {
   const DeviceFamily& family = catalog.families[size_t(index)];
   // The diameters on the wall this family's IFU is stated on.
@@ -245,6 +247,20 @@ FamilyEvaluation EvaluateFamily(const SizingAnatomy& anatomy,
   const double limbLo = p.limbOversizingMinPercent, limbHi = p.limbOversizingMaxPercent;
   e.rightLimb = ChooseDeviceSize(family.limbs.sizes, a.rightIliacDiameterMm, limbLo, limbHi);
   e.leftLimb = ChooseDeviceSize(family.limbs.sizes, a.leftIliacDiameterMm, limbLo, limbHi);
+  // The surgeon's limbs: what lands on each side given (the extension, else the limb).
+  for (int side = 0; given && side < 2; ++side)
+    if (given->limb[std::size_t(side)].Given())
+    {
+      const ResolvedComponent& last = given->extension[std::size_t(side)].Given() ? given->extension[std::size_t(side)]
+                                                                                  : given->limb[std::size_t(side)];
+      SizeChoice& limb = side == 0 ? e.rightLimb : e.leftLimb;
+      limb = SizeChoice{};
+      limb.diameterMm = last.item->distalDiameterMm;
+      limb.profileFr = given->limb[std::size_t(side)].item->profileFr;
+      limb.forced = true;
+      limb.oversizingPercent =
+        OversizingPercent(limb.diameterMm, side == 0 ? a.rightIliacDiameterMm : a.leftIliacDiameterMm);
+    }
 
   e.checks.push_back(WithEvidence(
     SizingCheck("main body oversizing", "neck", e.mainBody, family.mainBodies.sizes, a.proximalNeckDiameterMm, lo, hi),
@@ -341,8 +357,12 @@ void Recommend(DeviceSelection& s, bool configuring)
   if (e.EstimatedOnLumen())
     verdict = "estimated (lumen): sized on the lumen at " + JoinWithCommas(e.estimatedFromLumen) +
               " where the outer wall was not traced; IFU " + (fails > 0 ? verdict : "indeterminate, " + verdict);
-  s.summary = e.family + (s.forced ? " (forced)" : "") + ": " + ChoiceText("main body", e.mainBody) + ", " +
-              ChoiceText("right limb", e.rightLimb) + ", " + ChoiceText("left limb", e.leftLimb) + "; " + verdict;
+  s.summary = e.family +
+              (s.given    ? " (given configuration)"
+               : s.forced ? " (forced)"
+                          : "") +
+              ": " + ChoiceText("main body", e.mainBody) + ", " + ChoiceText("right limb", e.rightLimb) + ", " +
+              ChoiceText("left limb", e.leftLimb) + "; " + verdict;
   for (const CriterionCheck& c : e.checks)
     if (c.status != CheckStatus::Pass)
       s.reasons.push_back(e.family + ": " + c.text);
@@ -453,8 +473,22 @@ DeviceSelection SelectDevice(const SizingAnatomy& anatomy,
   DeviceSelection s;
   s.proximalTargetPercent = Middle(params.proximalOversizingMinPercent, params.proximalOversizingMaxPercent);
   s.limbTargetPercent = Middle(params.limbOversizingMinPercent, params.limbOversizingMaxPercent);
-  s.forced = !params.forcedDevice.empty();
-  if (s.forced)
+  s.forced = !params.forcedDevice.empty() || params.configuration.has_value();
+  std::optional<ResolvedConfiguration> given;
+  DeviceSelectionParams p = params;
+  if (params.configuration)
+  {
+    given = ResolveGivenConfiguration(*params.configuration, catalog);
+    if (given->mainBodySide >= 0)
+      p.ipsilateralSide = given->mainBodySide == 0 ? IpsilateralSide::Right : IpsilateralSide::Left;
+    s.families.push_back(
+      EvaluateFamily(anatomy, catalog, given->familyIndex, p, given->mainBody.item->diameterMm, &*given));
+    s.given = true;
+    if (given->mainBodySide >= 0)
+      s.families.back().ipsilateral.reason =
+        std::string(given->mainBodySide == 0 ? "right" : "left") + ", as the configuration gives it";
+  }
+  else if (s.forced)
   {
     const ForcedDevice forced = ParseForcedDevice(params.forcedDevice, catalog);
     s.families.push_back(EvaluateFamily(anatomy, catalog, forced.familyIndex, params, forced.mainBodyDiameterMm));
@@ -481,6 +515,12 @@ DeviceSelection SelectDevice(const SizingAnatomy& anatomy,
     ConfigurationAnatomy onWall = *lengths;
     const SizingAnatomy a = anatomy.On(family.diameterReference);
     onWall.iliacDiameterMm = { a.rightIliacDiameterMm, a.leftIliacDiameterMm };
+    if (given)
+    {
+      e.configuration =
+        ConfigureGivenDevice(family, *given, chosen, onWall, e.ipsilateral, params.deploymentToleranceMm);
+      continue;
+    }
     e.configuration = ConfigureDevice(family, chosen, onWall, e.ipsilateral, params.deploymentToleranceMm);
     if (e.configuration.configured)
     {

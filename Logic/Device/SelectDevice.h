@@ -46,16 +46,20 @@
 /// \throws InputError for parameters out of range (ValidateDeviceSelectionParams), a negative,
 ///         zero or infinite measurement (ValidateSizingAnatomy), an invalid catalogue
 ///         (ValidateDeviceCatalog), or a forced device that the catalogue does not hold (the
-///         message names the catalogue and lists the families or sizes it does hold).
+///         message names the catalogue and lists the families or sizes it does hold), or a
+///         configuration the catalogue cannot resolve (ResolveGivenConfiguration) or place
+///         (ConfigureGivenDevice).
 #pragma once
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "Device/ConfigureDevice.h"
 #include "Device/CriterionCheck.h"
+#include "Device/GivenConfiguration.h"
 #include "Device/DeviceCatalog.h"
 #include "Measurement/MeasureAnatomy.h"
 
@@ -114,6 +118,11 @@ struct DeviceSelectionParams
   /// How far a component may land from its plan, mm (≥ 0): the limbs are placed with this margin
   /// where their landing window allows (ConfigureDevice, LimbOptions.h).
   double deploymentToleranceMm = DeploymentToleranceMm;
+  /// The surgeon's configuration (GivenConfiguration.h): when set, its family is the only one
+  /// evaluated and is the recommendation (as forced), its main body and given limbs the sizes the
+  /// IFU checks judge, its main-body side (when given) the ipsilateral side, and its configuration
+  /// exactly what it gives (ConfigureGivenDevice). Resolved against the catalogue by SelectDevice.
+  std::optional<GivenConfiguration> configuration;
 };
 
 /// One chosen catalogue size, or none.
@@ -156,6 +165,7 @@ struct DeviceSelection
   std::vector<FamilyEvaluation> families; ///< catalogue order; only the forced one when forced
   int recommended = -1;                   ///< index into `families`; −1: no device within IFU
   bool forced = false;
+  bool given = false; ///< forced by a configuration the surgeon gave (DeviceSelectionParams::configuration)
   bool recommendedWithinIfu = false;    ///< no failing check
   bool recommendedFullyChecked = false; ///< and no indeterminate check
   /// The IFU result: the recommended family's IfuStatus(); with no recommendation, "fail" when every

@@ -32,6 +32,22 @@ Json Placement(const RepairPlan& plan, double target, const ConfiguredComponent&
            { "fromTargetMm", { c.proximalMm, c.distalMm } } };
 }
 
+/// With a configuration given: the recommendation's order list and every difference from it; null
+/// without one.
+Json Differences(const RepairPlan& plan)
+{
+  if (!plan.recommendation)
+    return Json(nullptr);
+  const int f = FamilyForMainBody(*plan.recommendation);
+  Json list = Json::array();
+  for (const ConfigurationDifference& d : plan.configurationDifferences)
+    list.push_back(
+      { { "what", d.what }, { "change", d.change }, { "consequence", d.consequence }, { "text", d.Text() } });
+  return { { "recommendedOrderList",
+             f >= 0 ? Json(plan.recommendation->families[std::size_t(f)].configuration.OrderList()) : Json(nullptr) },
+           { "items", list } };
+}
+
 } // namespace
 
 nlohmann::json DeploymentToJson(const RepairPlan& plan)
@@ -50,6 +66,7 @@ nlohmann::json DeploymentToJson(const RepairPlan& plan)
   {
     const ConfiguredComponent& part = c->components[index];
     Json json = { { "role", ToString(part.role) },
+                  { "side", part.role == OrderRole::MainBody ? Json(nullptr) : Json(SideName(part.side)) },
                   { "name", part.item.name },
                   { "catalogueCode", part.item.code.empty() ? Json(nullptr) : Json(part.item.code) },
                   { "diameterMm", NumberOrNull(part.item.diameterMm) },
@@ -142,6 +159,8 @@ nlohmann::json DeploymentToJson(const RepairPlan& plan)
     { "ipsilateralSide", SideName(c->ipsilateralSide) },
     { "ipsilateralReason", c->ipsilateralReason },
     { "orderList", c->OrderList() },
+    { "given", c->given },
+    { "differences", Differences(plan) },
     { "components", components },
     { "overlaps", overlaps },
     { "rightCoveredLengthMm", c->configured ? Json(c->coveredLengthMm[0]) : Json(nullptr) },

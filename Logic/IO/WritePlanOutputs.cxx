@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "IO/ConfigurationFile.h"
 #include "IO/DeploymentToJson.h"
 #include "IO/DeviceSelectionToJson.h"
 #include "IO/ReportHtml.h"
@@ -130,7 +131,7 @@ PlanRequest PlanRequestFor(const PlanOutputPaths& paths)
   PlanRequest request;
   const bool straightened = !paths.straightenedVolume.empty() || !paths.straightenedLeftVolume.empty();
   if (!paths.returnParameterFile.empty() || !paths.simulatedStentModel.empty() || !paths.report.empty() ||
-      !paths.reportHtml.empty() || !paths.measurements.empty())
+      !paths.reportHtml.empty() || !paths.measurements.empty() || !paths.configuration.empty())
     request.through = PlanStage::Device;
   else if (!paths.diameterProfile.empty() || !paths.wallLabelMap.empty() || !paths.outerWallModel.empty() ||
            straightened)
@@ -145,6 +146,18 @@ PlanRequest PlanRequestFor(const PlanOutputPaths& paths)
   request.wallLabelMap = !paths.wallLabelMap.empty();
   request.ctAroundLumen = straightened || !paths.reportHtml.empty();
   return request;
+}
+
+std::string ConfigurationNotWritten(const RepairPlan& plan)
+{
+  const DeviceConfiguration* c = plan.Configuration();
+  if (c && c->configured)
+    return "";
+  return "No configuration was made (" +
+         (c                                 ? c->unknownReason
+          : plan.notSimulatedReason.empty() ? std::string("no family has a main body for this neck")
+                                            : plan.notSimulatedReason) +
+         "), so outputConfiguration is not written.";
 }
 
 void WritePlanOutputs(const RepairPlan& plan,
@@ -227,6 +240,18 @@ void WritePlanOutputs(const RepairPlan& plan,
     const ReportFigures figures = BuildReportFigures(plan, CtOf(plan));
     const ReportRun about{ run.inputVolume, run.deviceCatalog, run.neckRules, ReportDateNow(), SGP_VERSION };
     WriteTextFile(ReportHtml(plan, figures, about), outputs.Stage(paths.reportHtml), "visual planning report");
+  }
+  if (!paths.configuration.empty())
+  {
+    Require(plan, PlanStage::Device, "outputConfiguration");
+    const DeviceConfiguration* c = plan.Configuration();
+    if (!c || !c->configured)
+      throw std::logic_error("WritePlanOutputs: outputConfiguration was asked for, but no configuration was made "
+                             "(the front end leaves it out: ConfigurationNotWritten)");
+    WriteTextFile(
+      ConfigurationJson(GivenFromConfiguration(*c, plan.deploymentTargetAbscissaMm - plan.measurements.site.abscissaMm),
+                        std::string(c->given ? "Given" : "Recommended") + " configuration for " + run.inputVolume),
+      outputs.Stage(paths.configuration), "configuration");
   }
   if (!paths.returnParameterFile.empty())
   {

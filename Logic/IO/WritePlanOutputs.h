@@ -34,10 +34,13 @@ struct PlanOutputPaths
   /// overlaps), NominalRadius (mm), Oversizing (%), Apposition (mm), HealthyWall (1, 0, −1 not
   /// traced), ThrombusUnder (mm, NaN not traced), Calcified (1, 0, −1), Sealing (0/1).
   std::string simulatedStentModel;
-  std::string measurements;           ///< the table, .csv
-  std::string diameterProfile;        ///< per ring, .csv
-  std::string report;                 ///< the whole plan, .json
-  std::string reportHtml;             ///< the visual report, self-contained .html (ReportHtml.h)
+  std::string measurements;    ///< the table, .csv
+  std::string diameterProfile; ///< per ring, .csv
+  std::string report;          ///< the whole plan, .json
+  std::string reportHtml;      ///< the visual report, self-contained .html (ReportHtml.h)
+  /// The configuration simulated, in the format --configuration reads (ConfigurationFile.h); not
+  /// written (a warning in the plan's report) when none was configured.
+  std::string configuration;
   std::string straightenedVolume;     ///< the CT straightened along aorta → right iliac (ResliceCt.h)
   std::string straightenedLeftVolume; ///< likewise along aorta → left iliac
   std::string returnParameterFile;    ///< SEM return values; asks for the whole plan
@@ -57,6 +60,10 @@ struct PlanRunInfo
 /// diameter profile, the wall outputs and the straightened volumes (with the CT crop); the fitted surface for the stent
 /// models; centerlines for centerlines or landmarks; else the segmentation only.
 PlanRequest PlanRequestFor(const PlanOutputPaths& paths);
+
+/// Why the configuration file cannot be written (no configuration was made: a result, so the front
+/// end warns and leaves the output out), a sentence; "" when it can.
+std::string ConfigurationNotWritten(const RepairPlan& plan);
 
 /// Writes every output named in `paths` except the label map (the front end writes that as soon
 /// as the lumen is final; see PlanObserver) to `outputs`' staged paths; Commit() is the caller's.

@@ -49,7 +49,8 @@ std::vector<std::string> OrderLines(const RepairPlan& plan)
     lines.push_back(c->family + ": the components' lengths are not configured — " + c->unknownReason + estimated + ".");
     return lines;
   }
-  lines.push_back(c->family + ", main body from the " + c->ipsilateralReason + estimated);
+  lines.push_back((c->given ? "Given by the surgeon: " : "") + c->family + ", main body from the " +
+                  c->ipsilateralReason + estimated);
   const double offset = plan.deploymentTargetAbscissaMm - plan.measurements.site.abscissaMm;
   for (const ConfiguredComponent& part : c->components)
   {
@@ -70,6 +71,18 @@ std::vector<std::string> OrderLines(const RepairPlan& plan)
       where = "from " + Mm(part.proximalMm) + " to " + Mm(part.distalMm) + " below the proximal edge" +
               (std::isfinite(part.holdsAboveMm + part.holdsBelowMm) ? "; " + part.HoldsText() : std::string());
     lines.push_back("  " + part.RoleText() + ": " + part.OrderText() + ", " + where);
+  }
+  if (plan.recommendation)
+  {
+    const int f = FamilyForMainBody(*plan.recommendation);
+    const std::string recommended =
+      f >= 0 ? plan.recommendation->families[std::size_t(f)].configuration.OrderList() : std::string("none");
+    if (plan.configurationDifferences.empty())
+      lines.push_back("  the same as the plan's recommendation (" + recommended + ")");
+    else
+      lines.push_back("  differs from the plan's recommendation (" + recommended + "):");
+    for (const ConfigurationDifference& d : plan.configurationDifferences)
+      lines.push_back("    " + d.Text());
   }
   for (const ComponentOverlap& o : c->overlaps)
     lines.push_back("  overlap, " + o.junction + ": " + Mm(o.overlapMm) + " (needs " + OverlapNeedsText(o) + ")");

@@ -395,7 +395,32 @@ void ChooseAndSimulateDevice(const WallDistanceField& wall,
   std::optional<ConfigurationAnatomy> lengths;
   if (siteKnown)
     lengths = ConfigurationLengths(plan.centerlines, plan.measurements, plan.deploymentTargetAbscissaMm);
+  const double recommendedTargetMm = plan.deploymentTargetAbscissaMm;
+  if (params.selection.configuration)
+  {
+    // The plan's own recommendation first, to compare the surgeon's with; then the surgeon's, at
+    // the main body's position given (else the plan's).
+    DeviceSelectionParams own = params.selection;
+    own.configuration.reset();
+    plan.recommendation = SelectDevice(sizing, params.catalog, own, lengths ? &*lengths : nullptr);
+    for (const GivenComponent& c : params.selection.configuration->components)
+      if (siteKnown && c.role == ComponentRole::MainBody && std::isfinite(c.proximalEdgeBelowLowestRenalMm))
+      {
+        plan.deploymentTargetAbscissaMm = plan.measurements.site.abscissaMm + c.proximalEdgeBelowLowestRenalMm;
+        lengths = ConfigurationLengths(plan.centerlines, plan.measurements, plan.deploymentTargetAbscissaMm);
+      }
+  }
   plan.selection = SelectDevice(sizing, params.catalog, params.selection, lengths ? &*lengths : nullptr);
+  if (plan.recommendation)
+  {
+    const int recommended = FamilyForMainBody(*plan.recommendation);
+    const int given = FamilyForMainBody(plan.selection);
+    if (recommended >= 0 && given >= 0)
+      plan.configurationDifferences =
+        CompareConfigurations(plan.selection.families[std::size_t(given)].configuration,
+                              plan.recommendation->families[std::size_t(recommended)].configuration,
+                              plan.deploymentTargetAbscissaMm - recommendedTargetMm);
+  }
   WarnSizedOnLumen(plan.selection, report);
   plan.orderedFamily = FamilyForMainBody(plan.selection);
   AddOrderRows(plan);

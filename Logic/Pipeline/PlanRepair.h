@@ -54,6 +54,7 @@
 #include "Device/DeploymentTolerance.h"
 #include "Device/FitCheck.h"
 #include "Device/HostileNeck.h"
+#include "Device/CompareConfigurations.h"
 #include "Device/SelectDevice.h"
 #include "Measurement/MeasureAnatomy.h"
 #include "Segmentation/GrowLumenRegion.h"
@@ -203,6 +204,11 @@ struct RepairPlan
   DeploymentTolerance deploymentTolerance;
   /// The simulated ordered graft's right and left axes (GraftAxisOf), when it was configured.
   std::array<GraftAxis, 2> graftAxes;
+  /// With a configuration given (DeviceSelectionParams::configuration): the selection the plan
+  /// would have made without it (its recommendation), and every way the given one differs from
+  /// that recommendation's configuration (CompareConfigurations.h; empty: the same).
+  std::optional<DeviceSelection> recommendation;
+  std::vector<ConfigurationDifference> configurationDifferences;
   /// Why no graft was simulated (a sentence without a final full stop), when the plan reached the
   /// device stage without one; else empty.
   std::string notSimulatedReason;
