@@ -37,7 +37,88 @@ std::array<double, 3> NominalDiameters(const RepairPlan& plan)
   return { e.mainBody.diameterMm, e.rightLimb.diameterMm, e.leftLimb.diameterMm };
 }
 
+/// The rows [first, last] of `image`, as an image of its own.
+PlaneImage Rows(const PlaneImage& image, int first, int last)
+{
+  PlaneImage crop;
+  crop.width = image.width;
+  crop.height = last - first + 1;
+  crop.pixelMm = image.pixelMm;
+  crop.hu.assign(image.hu.begin() + std::ptrdiff_t(first) * image.width,
+                 image.hu.begin() + std::ptrdiff_t(last + 1) * image.width);
+  return crop;
+}
+
+/// Display pixels per mm of a hold figure.
+constexpr double HoldScale = 4.0;
+
 } // namespace
+
+void WriteHoldFigures(const RepairPlan& plan, const ReportFigures& figures, std::ostream& out)
+{
+  const DeploymentTolerance& t = plan.deploymentTolerance;
+  const DeviceConfiguration* c = plan.Configuration();
+  if (!t.assessed || !c)
+    return;
+  for (const ComponentHold& h : t.components)
+  {
+    if (h.component >= c->components.size())
+      continue;
+    const ConfiguredComponent& part = c->components[h.component];
+    const bool body = part.role == OrderRole::MainBody;
+    const int side = body ? c->ipsilateralSide : part.side;
+    const StraightenedFigure& f = figures.straightened[std::size_t(side)];
+    const auto extent = std::find_if(f.components.begin(), f.components.end(),
+                                     [&](const ComponentExtent& e) { return e.component == h.component; });
+    if (extent == f.components.end() || f.image.height < 2)
+      continue;
+    const double edge = body ? extent->fromMm : extent->toMm;
+    const double px = f.image.pixelMm, half = (f.image.width - 1) / 2.0 * px;
+    const double reach = std::max(t.searchMm, t.toleranceMm) + 8.0;
+    const int first = std::clamp(int(std::floor((edge - reach) / px)), 0, f.image.height - 1);
+    const int last = std::clamp(int(std::ceil((edge + reach) / px)), first, f.image.height - 1);
+    const double top = edge - reach, height = 2.0 * reach;
+    const double left = -half - 2.0, width = 2.0 * half + 42.0;
+    const double from = edge - h.aboveMm, to = edge + h.belowMm;
+    out << "<div class=\"figure\"><svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << C(left) << " " << C(top)
+        << " " << C(width) << " " << C(height) << "\" width=\"" << int(std::lround(width * HoldScale)) << "\" height=\""
+        << int(std::lround(height * HoldScale)) << "\" data-hold=\"" << h.component << "\" data-view-top-mm=\""
+        << FormatNumber(top, 3) << "\" data-view-height-mm=\"" << FormatNumber(height, 3) << "\"><rect x=\"" << C(left)
+        << "\" y=\"" << C(top) << "\" width=\"" << C(width) << "\" height=\"" << C(height) << "\" fill=\"#fff\"/>";
+    out << "<image x=\"" << C(-half - px / 2) << "\" y=\"" << C(first * px - px / 2) << "\" width=\""
+        << C(f.image.width * px) << "\" height=\"" << C((last - first + 1) * px)
+        << "\" preserveAspectRatio=\"none\" href=\""
+        << PngDataUri(Rows(f.image, first, last), ReportWindowLowHu, ReportWindowHighHu) << "\"/>";
+    // The band over the CT, the tolerance dashed, the edge; the band again as a bar beside the CT.
+    out << "<rect x=\"" << C(-half) << "\" y=\"" << C(from) << "\" width=\"" << C(2 * half) << "\" height=\""
+        << C(to - from) << "\" fill=\"#2c2\" fill-opacity=\"0.25\"/>";
+    for (const double y : { edge - t.toleranceMm, edge + t.toleranceMm })
+      out << "<line x1=\"" << C(-half) << "\" x2=\"" << C(half + 8) << "\" y1=\"" << C(y) << "\" y2=\"" << C(y)
+          << "\" stroke=\"#333\" stroke-width=\"0.3\" stroke-dasharray=\"1.5,1\"/>";
+    out << "<rect class=\"hold-band\" data-hold=\"" << h.component << "\" data-edge-mm=\"" << FormatNumber(edge, 3)
+        << "\" data-band-from-mm=\"" << FormatNumber(from, 3) << "\" data-band-to-mm=\"" << FormatNumber(to, 3)
+        << "\" x=\"" << C(half + 2) << "\" y=\"" << C(from) << "\" width=\"4\" height=\"" << C(to - from)
+        << "\" fill=\"#0a0\"/>";
+    out << "<line class=\"hold-edge\" x1=\"" << C(-half) << "\" x2=\"" << C(half + 8) << "\" y1=\"" << C(edge)
+        << "\" y2=\"" << C(edge) << "\" stroke=\"#e00\" stroke-width=\"0.5\"/>";
+    // "≥" where the range held to the search's end; "as far as it goes" where it ends at a stop.
+    const auto label = [&](double mm, bool stops, const std::string& fails, const char* way)
+    {
+      return (stops           ? ""
+              : fails.empty() ? "≥ "
+                              : "") +
+             FormatNumber(mm) + " mm " + way + (stops ? " (as far as it goes)" : "");
+    };
+    out << "<text x=\"" << C(half + 9) << "\" y=\"" << C(from - 0.8) << "\" font-size=\"3\">"
+        << Escape(label(h.aboveMm, h.aboveStops, h.aboveFails, "up")) << "</text><text x=\"" << C(half + 9) << "\" y=\""
+        << C(to + 3.2) << "\" font-size=\"3\">" << Escape(label(h.belowMm, h.belowStops, h.belowFails, "down"))
+        << "</text></svg>";
+    out << "<div class=\"caption\"><b>" << Escape(h.name) << "</b> (" << (body ? "proximal" : "distal") << " edge, "
+        << (side == 0 ? "right" : "left") << " view): " << Escape(h.Text(t.searchMm))
+        << ". Red: its edge as simulated; green: where it may land and the plan still holds; dashed: ±"
+        << Num(t.toleranceMm) << " mm.</div></div>\n";
+  }
+}
 
 void WriteProfilePlot(const RepairPlan& plan, int v, const std::vector<SizingLevel>& levels, std::ostream& out)
 {

@@ -31,6 +31,17 @@ void WriteProfilePlot(const RepairPlan& plan, int v, const std::vector<SizingLev
 /// levels, landmarks (in words), the simulated components' extents, a 10 mm scale bar.
 void WriteStraightenedView(const StraightenedFigure& f, const char* side, std::ostream& out);
 
+/// Where each component holds (issue 47): per component the deployment tolerance assessed, a small
+/// crop of the straightened view around its edge as simulated (the main body's proximal edge on
+/// the ipsilateral view, a limb's or extension's distal edge on its side's), the edge in red, the
+/// band over which it may land and the plan still hold in green (over the CT, and as a solid bar
+/// right of it), the tolerance ± dashed; the range in words below. 4 display px per mm. Marks:
+/// `data-hold` (the component's index in the order list), `data-edge-mm` (path abscissa),
+/// `data-band-from-mm`, `data-band-to-mm` (edge − above, edge + below) on the bar, `data-view-top-mm`
+/// and `data-view-height-mm` on the SVG (its viewBox's vertical extent). Nothing when the tolerance
+/// was not assessed.
+void WriteHoldFigures(const RepairPlan& plan, const ReportFigures& figures, std::ostream& out);
+
 /// The cross-section at one level: the measured ring, its shortest and longest diameter, the
 /// outer contour, the level's outer and lumen values as the return file has them (`values`).
 void WriteCrossSectionView(const CrossSectionFigure& f,

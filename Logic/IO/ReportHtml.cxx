@@ -453,7 +453,17 @@ std::string ReportHtml(const RepairPlan& plan, const ReportFigures& figures, con
          "limb, orange contralateral limb, purple iliac extension).</p><div class=\"figures\">\n";
   WriteStraightenedView(figures.straightened[0], "right", out);
   WriteStraightenedView(figures.straightened[1], "left", out);
-  out << "</div>\n<h2>Cross-sections at the sizing levels</h2>\n<p class=\"def\">Perpendicular to the centerline; the "
+  out << "</div>\n";
+  if (plan.deploymentTolerance.assessed)
+  {
+    out << "<h2 id=\"holds\">Where each component holds</h2>\n<p class=\"def\">The ordered graft deployed again "
+           "with each component displaced along its vessel, the others where planned: around each component's edge "
+           "on the straightened view, the range over which it may land and the fit check still passes.</p>"
+           "<div class=\"figures\">\n";
+    WriteHoldFigures(plan, figures, out);
+    out << "</div>\n";
+  }
+  out << "<h2>Cross-sections at the sizing levels</h2>\n<p class=\"def\">Perpendicular to the centerline; the "
          "patient's left to the right, posterior down (as an axial view).</p><div class=\"figures\">\n";
   for (const CrossSectionFigure& f : figures.sections)
     WriteCrossSectionView(f, values, out);

@@ -10,7 +10,9 @@
 /// levels (a)–(f), the device's nominal diameters); the straightened views aorta → right and
 /// aorta → left iliac (lumen and outer-wall edges, levels, landmarks, the graft's extent, 10 mm
 /// scale bar); the cross-section at each level (the measured ring, its shortest and longest
-/// diameter, the outer contour); the device table (every family's sizes and IFU checks with
+/// diameter, the outer contour); where each component holds (with a deployment tolerance
+/// assessed: per component its edge and the band over which it may land, ReportFigureSvg.h); the
+/// device table (every family's sizes and IFU checks with
 /// status and margin); the fit check (seal lengths, oversizing, covered ostia, apposition per
 /// segment).
 ///

@@ -103,7 +103,7 @@ void AddSimulatedComponents(const DeployedGraft& graft, int side, StraightenedFi
     else if (part.role == OrderRole::IliacExtension)
       label = "iliac extension";
     (void)ipsilateral;
-    f.components.push_back({ label, ComponentColour(part), from, to });
+    f.components.push_back({ label, ComponentColour(part), from, to, std::size_t(index) });
     f.graftStartMm = std::isnan(f.graftStartMm) ? from : std::min(f.graftStartMm, from);
     f.graftEndMm = std::isnan(f.graftEndMm) ? to : std::max(f.graftEndMm, to);
   }

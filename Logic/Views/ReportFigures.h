@@ -64,6 +64,7 @@ struct ComponentExtent
   Eigen::Vector3d rgb = Eigen::Vector3d::Zero();
   double fromMm = 0.0; ///< path abscissae
   double toMm = 0.0;
+  std::size_t component = 0; ///< index into the simulated graft's components (the order list's, when configured)
 };
 
 struct StraightenedFigure

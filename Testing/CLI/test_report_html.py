@@ -214,6 +214,69 @@ def main():
         shutil.rmtree(profile, ignore_errors=True)
 
 
+HOLD_SCALE = 4.0  # display px per mm of a hold figure (ReportFigureSvg.h)
+
+
+def check_hold_figures(ok, dom, deployment, workdir, exe, profile):
+    """Issue 47 item 3: per component, its hold band on the straightened view, where the numbers say.
+
+    The DOM: one figure per component the tolerance assessed, its band from the edge less the range
+    above to the edge plus the range below (the report JSON's), to 0.001 mm. Chromium: each figure
+    alone on a page, screenshot; the solid bar's green rows span the band to 2 px (0.5 mm at 4 px per
+    mm: a pixel's rounding at each end), none where the band is empty; the figure is not blank."""
+    holds = (deployment or {}).get("tolerance") or {}
+    components = holds.get("components") or []
+    ok(holds.get("assessed") and components, f"wall in fat: the deployment tolerance was assessed "
+       f"({len(components)} components)", str(holds.get("notAssessedReason")))
+    for hold in components:
+        k = hold["component"]
+        svg = re.search(r'(<svg[^>]*data-hold="%d"[^>]*>.*?</svg>)' % k, dom, re.S)
+        bar = re.search(r'class="hold-band" data-hold="%d" data-edge-mm="([^"]*)" data-band-from-mm="([^"]*)" '
+                        r'data-band-to-mm="([^"]*)"' % k, dom)
+        if not ok(svg and bar, f"{hold['name']}: a hold figure with its band"):
+            continue
+        edge, start, end = (float(v) for v in bar.groups())
+        ok(abs(start - (edge - hold["aboveMm"])) <= 1e-3 and abs(end - (edge + hold["belowMm"])) <= 1e-3,
+           f"{hold['name']}: the band runs {hold['aboveMm']:.1f} mm above to {hold['belowMm']:.1f} mm below its edge",
+           f"{start} {edge} {end}")
+        tag = svg.group(1)[:svg.group(1).index(">")]
+        top = float(re.search(r'data-view-top-mm="([^"]*)"', tag).group(1))
+        width = int(re.search(r' width="(\d+)"', tag).group(1))
+        height = int(re.search(r' height="(\d+)"', tag).group(1))
+        view_left = float(re.search(r'viewBox="([^ ]*) ', tag).group(1))
+        bar_x = float(re.search(r'class="hold-band"[^>]* x="([^"]*)"', svg.group(1)).group(1))
+        page = os.path.join(workdir, f"hold-{k}.html")
+        with open(page, "w") as handle:
+            handle.write('<html><body style="margin:0;background:#fff">%s</body></html>' % svg.group(1))
+        out = os.path.join(workdir, f"hold-{k}.png")
+        result = chromium(exe, [f"--window-size={width},{height}", f"--screenshot={out}", "file://" + page], profile)
+        if not ok(os.path.exists(out), f"{hold['name']}: Chromium draws the hold figure", result.stderr[-300:]):
+            continue
+        pixels = screenshot_pixels(out)
+        ok(not blank(pixels), f"{hold['name']}: the hold figure is not blank")
+        column = int(round((bar_x + 2.0 - view_left) * HOLD_SCALE))  # the bar's middle (4 mm wide)
+        rgb = pixels[:, column, :3].astype(int)
+        green = np.flatnonzero((rgb[:, 1] > 140) & (rgb[:, 0] < 60) & (rgb[:, 2] < 60))
+        expected = ((start - top) * HOLD_SCALE, (end - top) * HOLD_SCALE)
+        if end - start < 0.25:
+            ok(green.size == 0, f"{hold['name']}: no band drawn for a range of {end - start:.2f} mm", str(green[:5]))
+        else:
+            ok(green.size and abs(green[0] - expected[0]) <= 2 and abs(green[-1] + 1 - expected[1]) <= 2,
+               f"{hold['name']}: in Chromium the band spans rows {expected[0]:.0f}-{expected[1]:.0f} as its numbers say",
+               f"green rows {green[:1]}..{green[-1:]}")
+
+
+def screenshot_pixels(path):
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    w, h, _ = image.GetDimensions()
+    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[::-1]
+
+
 def run_checks(args, workdir, profile):
     # The default phantom (no wall to be seen: the outer values are -1 and nothing is recommended),
     # then the same anatomy with a 1.5 mm wall in fat and 14 mm iliacs, where every (a)-(f) is
@@ -323,6 +386,7 @@ def check_case(args, workdir, profile, case, phantom_args, screenshot_out):
         ok(returned["recommendedDevice"] != "none" and all(float(returned[n]) > 0 for n in LEVELS),
               "wall in fat: a device is recommended and every (a)-(f) is measured (the comparison compares numbers)")
         check_order_and_graft(ok, dom.stdout, names, returned, deployment, workdir)
+        check_hold_figures(ok, dom.stdout, deployment, workdir, args.chromium, profile)
 
     # The straightened volume: geometry, and the lumen's width at (b)'s mark against the truth.
     data, header = sem_rules.read_nrrd(right)
