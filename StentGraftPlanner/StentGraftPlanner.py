@@ -35,12 +35,16 @@ from slicer.ScriptedLoadableModule import (
 )
 from slicer.util import VTKObservationMixin
 
-from StentGraftPlannerLib import Appearance, CliRun, Outcome, Replan, Results, Settings
+from StentGraftPlannerLib import Appearance, CliRun, EditConfiguration, Outcome, Replan, Results, Settings
 
 #: Parameter-node strings of the last completed run, which Re-plan compares with (saved with the scene):
 #: its editable landmarks (Replan.landmarksToText), what the panel showed (Replan.resultsSnapshot, JSON)
 #: and the fingerprint of its lumen segment (Replan.lumenFingerprint).
 LAST_RUN_LANDMARKS, LAST_RUN_RESULTS, LAST_RUN_LUMEN = "lastRunLandmarks", "lastRunResults", "lastRunLumen"
+
+#: The configuration the last completed run simulated (its --outputConfiguration file's text), which the
+#: editable order list shows (EditConfiguration.py); "" when the run made none.
+LAST_RUN_CONFIGURATION = "lastRunConfiguration"
 
 #: The name of the lumen's segment in the panel's segmentation (Appearance.SEGMENTS).
 LUMEN_SEGMENT = Appearance.SEGMENTS[0][0]
@@ -135,6 +139,8 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
             widget.connect(_changeSignal(widget), self.updateParameterNodeFromGUI)
         self.ui.applyButton.connect("clicked(bool)", self.onApplyButton)
         self.ui.replanButton.connect("clicked(bool)", self.onReplanButton)
+        self.ui.simulateConfigurationButton.connect("clicked(bool)", self.onSimulateConfigurationButton)
+        self.ui.configurationTable.horizontalHeader().setStretchLastSection(True)
         self.ui.openReportButton.connect("clicked(bool)", self.onOpenReportButton)
         self.ui.openReportButton.enabled = False
         self.ui.cancelButton.connect("clicked(bool)", self.onCancelButton)
@@ -227,6 +233,8 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
             self.ui.replanButton.enabled = (bool(ready) and self._run is None
                                             and self.logic.canReplan(self._parameterNode))
             self.ui.cancelButton.enabled = self._run is not None
+            self.ui.simulateConfigurationButton.enabled = (
+                bool(ready) and self._run is None and bool(self._parameterNode.GetParameter(LAST_RUN_CONFIGURATION)))
         finally:
             self._updatingGUI = False
 
@@ -248,14 +256,55 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
         """Run again from the landmarks as dragged and the last run's (or the edited) lumen."""
         self._startRun(replan=True)
 
-    def _startRun(self, replan):
+    def onSimulateConfigurationButton(self):
+        """Run the plan with the configuration as edited in the table (EditConfiguration.editedConfiguration)."""
+        with slicer.util.tryWithErrorDisplay("Could not simulate this configuration.", waitCursor=True):
+            document = json.loads(self._parameterNode.GetParameter(LAST_RUN_CONFIGURATION))
+            chosen = []
+            for row in range(self.ui.configurationTable.rowCount):
+                combo = self.ui.configurationTable.cellWidget(row, 1)
+                data = combo.itemData(combo.currentIndex) if combo is not None else None
+                chosen.append(json.loads(data) if data else None)
+            edited, _ = EditConfiguration.editedConfiguration(document, chosen, self.ui.mainBodySideComboBox.currentText)
+            handle, path = tempfile.mkstemp(prefix="StentGraftPlanner-configuration-", suffix=".json",
+                                            dir=slicer.app.temporaryPath)
+            with os.fdopen(handle, "w") as out:
+                json.dump(edited, out, indent=2)
+        self._startRun(replan=False, configurationPath=path)
+
+    def _showConfiguration(self):
+        """The editable order list: one row per component of the last run's configuration, a combo box of
+        the catalogue's entries of its role in the family (the current one selected), the main body's side."""
+        table = self.ui.configurationTable
+        table.setRowCount(0)
+        text = self._parameterNode.GetParameter(LAST_RUN_CONFIGURATION) if self._parameterNode else ""
+        if not text:
+            return
+        document = json.loads(text)
+        catalog = self.logic.catalog(self._parameterNode)
+        rows = EditConfiguration.rows(document)
+        table.setRowCount(len(rows))
+        for index, (label, role, current) in enumerate(rows):
+            table.setItem(index, 0, qt.QTableWidgetItem(label))
+            combo = qt.QComboBox()
+            entries = EditConfiguration.catalogueEntries(catalog, document.get("family", ""), role)
+            if current not in [entry for entry, _ in entries]:
+                entries.insert(0, (current, EditConfiguration.entryText(current)))
+            for entry, words in entries:
+                combo.addItem(words, json.dumps(entry))
+                if entry == current:
+                    combo.setCurrentIndex(combo.count - 1)
+            table.setCellWidget(index, 1, combo)
+        self.ui.mainBodySideComboBox.setCurrentText(document.get("mainBodySide", "right"))
+
+    def _startRun(self, replan, configurationPath=None):
         with slicer.util.tryWithErrorDisplay("Could not start the planning run.", waitCursor=True):
             self.updateParameterNodeFromGUI()
             self.ui.changesLabel.text = ""
             self.ui.orderListLabel.text = ""
             self.ui.recommendationLabel.text = ""
             self._run = self.logic.startPlanning(self._parameterNode, self.onRunFinished, self.onRunProgress,
-                                                 replan=replan)
+                                                 replan=replan, configurationPath=configurationPath)
             self.ui.progressBar.value = 0
             self.ui.progressBar.show()
             self.ui.statusLabel.text = CliRun.progressText(0, "")
@@ -292,6 +341,7 @@ class StentGraftPlannerWidget(ScriptedLoadableModuleWidget, VTKObservationMixin)
         self.ui.orderListLabel.text = results.orderListHtml
         self.ui.recommendationLabel.text = results.recommendationHtml
         self.ui.resultsCollapsibleButton.collapsed = False
+        self._showConfiguration()
 
 
 def _controlPoints(markupsNode):
@@ -333,6 +383,16 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
     def bundledCatalogPath(self):
         """The devices.json installed beside the CLI (the CLI's default catalogue)."""
         return os.path.join(os.path.dirname(CliRun.cliModule(slicer.modules).path), "devices.json")
+
+    def catalog(self, parameterNode):
+        """The device catalogue the runs use (the deviceCatalogPath setting, else the bundled one), parsed;
+        an empty one when it cannot be read (the editable order list then offers each component as it is)."""
+        path = self.settings(parameterNode)["deviceCatalogPath"]
+        try:
+            with open(path or self.bundledCatalogPath()) as catalog:
+                return json.load(catalog)
+        except (OSError, ValueError, RuntimeError):
+            return {}
 
     def deviceFamilies(self):
         try:
@@ -443,21 +503,26 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
         os.close(handle)
         return path
 
-    def _parametersOfRun(self, parameterNode, reportPath, reportHtmlPath, replan):
-        """(parameters, Replan.ReplanInputs or None): a plan's, or a re-plan's (replanParameters)."""
+    def _parametersOfRun(self, parameterNode, reportPath, reportHtmlPath, replan, configurationPath=None):
+        """(parameters, Replan.ReplanInputs or None): a plan's, a re-plan's (replanParameters), or with a
+        configuration file the plan of that configuration (EditConfiguration.simulationParameters)."""
+        if configurationPath:
+            return EditConfiguration.simulationParameters(
+                self.cliParameters(parameterNode, reportPath, reportHtmlPath), configurationPath), None
         if not replan:
             return self.cliParameters(parameterNode, reportPath, reportHtmlPath), None
         inputs = self.replanParameters(parameterNode, reportPath, reportHtmlPath)
         return inputs.parameters, inputs
 
-    def startPlanning(self, parameterNode, onFinished, onProgress=None, replan=False):
+    def startPlanning(self, parameterNode, onFinished, onProgress=None, replan=False, configurationPath=None):
         """Start the CLI in the background; onFinished(outcome, results, errorText) is called once it ends
         (outcome: CliRun.COMPLETED with results, CANCELLED, or FAILED with the error text). replan: run
         from the edited landmarks and the last run's lumen (results.changesHtml then lists the changes)."""
         reportPath = self._newReportPath()
         reportHtmlPath = self._newReportHtmlPath(parameterNode)
         try:
-            parameters, replanInputs = self._parametersOfRun(parameterNode, reportPath, reportHtmlPath, replan)
+            parameters, replanInputs = self._parametersOfRun(parameterNode, reportPath, reportHtmlPath, replan,
+                                                             configurationPath)
             cliNode = CliRun.startCli(slicer.cli, slicer.modules, parameters, waitForCompletion=False)
         except Exception:
             os.remove(reportPath)
@@ -500,13 +565,14 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
         except OSError:
             pass  # not written yet, or still held open by the CLI being cancelled: a temporary file
 
-    def runPlanning(self, parameterNode, replan=False):
+    def runPlanning(self, parameterNode, replan=False, configurationPath=None):
         """Run the CLI and wait; returns PlanningResults, raises RuntimeError with the CLI's error text."""
         reportPath = self._newReportPath()
         reportHtmlPath = self._newReportHtmlPath(parameterNode)
         run = None
         try:
-            parameters, replanInputs = self._parametersOfRun(parameterNode, reportPath, reportHtmlPath, replan)
+            parameters, replanInputs = self._parametersOfRun(parameterNode, reportPath, reportHtmlPath, replan,
+                                                             configurationPath)
             cliNode = CliRun.startCli(slicer.cli, slicer.modules, parameters, waitForCompletion=True)
             run = CliRun.PlanningRun(cliNode, reportPath, parameterNode, reportHtmlPath)
             run.replan = replanInputs
@@ -520,8 +586,9 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
     def _cleanup(self, run):
         run.removeObservers()
         slicer.mrmlScene.RemoveNode(run.cliNode)
-        if os.path.exists(run.reportPath):
-            os.remove(run.reportPath)
+        for path in (run.reportPath, Settings.configurationPath(run.reportPath)):
+            if os.path.exists(path):
+                os.remove(path)
 
     def finishPlanning(self, run):
         """The results of a run whose CLI node has ended; RuntimeError with the CLI's error text when
@@ -560,6 +627,12 @@ class StentGraftPlannerLogic(ScriptedLoadableModuleLogic):
         parameterNode.SetParameter(LAST_RUN_LANDMARKS, Replan.landmarksToText(landmarks))
         parameterNode.SetParameter(LAST_RUN_RESULTS, json.dumps(snapshot))
         parameterNode.SetParameter(LAST_RUN_LUMEN, self.lumenFingerprint(parameterNode))
+        configuration = Settings.configurationPath(run.reportPath)
+        text = ""
+        if os.path.exists(configuration):
+            with open(configuration) as configurationFile:
+                text = configurationFile.read()
+        parameterNode.SetParameter(LAST_RUN_CONFIGURATION, text)
         parameterNode.EndModify(wasModified)
 
     def _addSegment(self, segmentation, labelMap, name, color):

@@ -195,7 +195,7 @@ def orderListLines(report, values=None):
     family = _family(report, familyName)
     entry = (family or {}).get("entry", {})
     status = entry.get("ifuStatus")
-    heading = "Order list: %s" % familyName
+    heading = ("Order list (your configuration): %s" if deployment.get("given") else "Order list: %s") % familyName
     if deployment.get("ipsilateralReason"):
         heading += ", main body from the %s" % deployment["ipsilateralReason"]
     heading += _estimatedText({"estimated": deployment.get("estimated") or entry.get("estimated"),
@@ -209,6 +209,7 @@ def orderListLines(report, values=None):
     for component in _list(deployment.get("components")):
         if isinstance(component, dict):
             lines.append(("text", _componentLine(component, deployment, report)))
+    lines += differenceLines(deployment)
     for overlap in _list(deployment.get("overlaps")):
         if isinstance(overlap, dict):
             lines.append(_overlapLine(overlap))
@@ -227,6 +228,23 @@ def orderListLines(report, values=None):
     for alternative in _list(deployment.get("alternatives")):
         if isinstance(alternative, dict):
             lines.append(("text", "Alternative: %s." % alternative.get("text", "?")))
+    return lines
+
+
+def differenceLines(deployment):
+    """A configuration the surgeon gave (issue 47; the report's deployment.differences): a line saying it
+    is the same as the plan's recommendation, or how it differs, then one line per difference with its
+    consequence ("right limb 20 mm longer (…): the right side covers …"); [] for the plan's own."""
+    differences = _dict(deployment.get("differences"))
+    if not deployment.get("given") or differences is None:
+        return []
+    recommended = differences.get("recommendedOrderList") or "none"
+    items = [d for d in _list(differences.get("items")) if isinstance(d, dict)]
+    if not items:
+        return [("pass", "The same as the plan's recommendation (%s)." % recommended)]
+    lines = [("warning", "Differs from the plan's recommendation (%s):" % recommended)]
+    for item in items:
+        lines.append(("text", "%s." % item.get("text", "?")))
     return lines
 
 

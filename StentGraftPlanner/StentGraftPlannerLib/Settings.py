@@ -140,6 +140,16 @@ REPORT_PARAMETER = "outputReport"
 #: CLI parameter of the visual report (HTML, a ``file`` output like the JSON one).
 REPORT_HTML_PARAMETER = "outputReportHtml"
 
+#: CLI parameter of the configuration the run simulated (JSON, the format --configuration reads: the
+#: panel's editable order list, EditConfiguration.py).
+CONFIGURATION_OUTPUT_PARAMETER = "outputConfiguration"
+
+
+def configurationPath(reportPath):
+    """Where a run writes the configuration it simulated: beside its temporary JSON report."""
+    root, _ = os.path.splitext(str(reportPath))
+    return root + "-configuration.json"
+
 
 def reportHtmlPath(folder, temporaryFolder, volumeName, stamp):
     """Where a run's visual report goes: ``folder`` (the reportFolder setting) or, when it is empty,
@@ -288,7 +298,8 @@ def buildCliParameters(settings, nodes, pointCounts, reportPath, reportHtmlPath=
     nodes: role name -> node (opaque here; ``None`` or missing when not selected).
     pointCounts: role name -> number of selected control points, for the markups inputs
         (POINT_ROLES); Slicer sends only the first selected point of a non-multiple ``point``.
-    reportPath: where the CLI writes its JSON report (a temporary file).
+    reportPath: where the CLI writes its JSON report (a temporary file); the configuration it simulated
+        goes beside it (``configurationPath``).
     reportHtmlPath: where it writes the visual report (``reportHtmlPath()``); None: not asked for.
 
     A point list (seed or landmark) that is missing or empty is left out: the CLI then finds the aorta
@@ -325,6 +336,7 @@ def buildCliParameters(settings, nodes, pointCounts, reportPath, reportHtmlPath=
             continue  # no point placed: the CLI finds the aorta (seed) or the landmark itself
         parameters[role.name] = node
     parameters[REPORT_PARAMETER] = str(reportPath)
+    parameters[CONFIGURATION_OUTPUT_PARAMETER] = configurationPath(reportPath)
     if reportHtmlPath:
         parameters[REPORT_HTML_PARAMETER] = str(reportHtmlPath)
     return parameters

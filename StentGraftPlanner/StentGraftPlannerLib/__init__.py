@@ -17,6 +17,8 @@ that way in CTest (``Testing/Python``).
 - ``Replan``: the panel's Re-plan: the landmarks of a run read back and compared with their dragged
   positions, the re-plan's CLI parameters (moved and given landmarks in RAS, the last run's or the
   edited lumen), and what changed between two runs, in words at clinical precision.
+- ``EditConfiguration``: the editable order list: the configuration a run simulated as rows, the
+  catalogue's entries for each, the edited file and the run that simulates it (issue 47).
 - ``Appearance``: colours and opacities of the outputs and of the plot series, and the colours of
   the simulated graft's components.
 """

@@ -31,6 +31,9 @@ from test_bad_input import bad_case, check, fresh_dir, results, run, run_cli  # 
 
 import jsonschema  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "StentGraftPlanner"))
+from StentGraftPlannerLib import EditConfiguration  # noqa: E402
+
 
 def plan(cli, workdir, label, volume, seed, extra):
     outdir = fresh_dir(os.path.join(workdir, "case-" + label))
@@ -161,6 +164,25 @@ def main():
                   f"{l_values.get('coveredOstia')}: {consequence}")
     check(covering >= 1, "on the demo phantom one length longer covers an internal iliac ostium on some side",
           str(covering))
+
+    # The panel's edit (EditConfiguration: the table's choice for the last limb, the same side) gives the
+    # file the direct edit gave, and the same difference.
+    last = max(i for i, c in enumerate(configuration["components"]) if c["role"] == "limb")
+    longer = next_longer(catalog, configuration["family"], configuration["components"][last]["code"])
+    chosen = [None] * len(configuration["components"])
+    chosen[last] = {"code": longer["code"]}
+    panel, edits = EditConfiguration.editedConfiguration(configuration, chosen, configuration["mainBodySide"])
+    direct = json.load(open(os.path.join(workdir, "longer-%s.json" % configuration["components"][last]["side"])))
+    check(panel["components"] == direct["components"] and edits == [
+        "%s limb: %s" % (configuration["components"][last]["side"], longer["code"])],
+        "the panel's edit of the last limb is the direct edit", str(edits))
+    path = write(workdir, "panel.json", panel)
+    outcome = plan(cli, workdir, "panel", volume, seed, ["--configuration", path])
+    if outcome:
+        direct_report = json.load(open(os.path.join(workdir, "case-longer-%s" % configuration["components"][last]["side"],
+                                                     "report.json")))
+        check(outcome[0]["deployment"]["differences"] == direct_report["deployment"]["differences"],
+              "the panel's simulation lists the direct edit's difference", str(outcome[0]["deployment"]["differences"]))
 
     # The main body from the other side, the positions left to the plan.
     swapped = copy.deepcopy(configuration)

@@ -262,7 +262,11 @@ class OrderListHtmlTest(unittest.TestCase):
             root = ET.fromstring(f.read())
         results = next(w for w in root.iter("widget") if w.get("name") == "resultsCollapsibleButton")
         names = [w.get("name") for w in results.iter("widget")][1:]
-        self.assertEqual(names[:2], ["orderListLabel", "recommendationLabel"])
+        # Issue 47: the order list made editable comes right below it, then the recommendation.
+        self.assertEqual(names[:2], ["orderListLabel", "editConfigurationGroupBox"])
+        group = next(w for w in results.iter("widget") if w.get("name") == "editConfigurationGroupBox")
+        inside = len(list(group.iter("widget")))
+        self.assertEqual(names[1 + inside], "recommendationLabel")
 
 
 class ReportSectionsTest(unittest.TestCase):
