@@ -96,6 +96,11 @@ int main(int argc, char* argv[])
                       ") is used only with inputLumenSegmentation, which was not given; the lumen is grown from the "
                       "CT." },
                     std::cerr);
+    if (!configuration.empty() && request.through != PlanStage::Device)
+      PrintWarnings({ "configuration (" + configuration +
+                      ") is used only when the plan reaches the device (a report, the measurements, the simulated "
+                      "graft, the configuration or the return parameters); none was asked for, so it is not read." },
+                    std::cerr);
     // The catalogue is read before any heavy work: a broken catalogue or unknown --device fails at once.
     const PlanRunInfo run{ inputVolume,
                            deviceCatalog.empty() ? BesideExecutable(argv[0], "devices.json") : deviceCatalog,

@@ -317,6 +317,13 @@ std::optional<Candidate> ConfigureBody(const DeviceFamily& family,
   return candidate;
 }
 
+/// \throws InputError for a negative (or NaN) deployment tolerance.
+void CheckTolerance(double deploymentToleranceMm)
+{
+  if (!(deploymentToleranceMm >= 0.0))
+    throw InputError("deploymentToleranceMm is " + FormatNumber(deploymentToleranceMm) + "; expected ≥ 0 mm.");
+}
+
 /// `configuration` marked not configured, for `reason`.
 DeviceConfiguration Unknown(DeviceConfiguration configuration, const std::string& reason)
 {
@@ -626,13 +633,15 @@ DeviceConfiguration ConfigureDevice(const DeviceFamily& family,
                                     const SideChoice& ipsilateral,
                                     double deploymentToleranceMm)
 {
-  if (!(deploymentToleranceMm >= 0.0))
-    throw InputError("deploymentToleranceMm is " + FormatNumber(deploymentToleranceMm) + "; expected ≥ 0 mm.");
+  CheckTolerance(deploymentToleranceMm);
   std::vector<const CatalogueComponent*> bodies;
   DeviceConfiguration c =
     ConfigureWithoutAlternatives(family, chosen, anatomy, ipsilateral, deploymentToleranceMm, bodies, nullptr);
   if (c.configured)
     LengthAlternatives(family, chosen, anatomy, ipsilateral, c);
+  for (int side = 0; side < 2 && c.configured; ++side)
+    if (const std::optional<SizeAlternative> wider = MarginAlternative(family, c, side))
+      c.alternatives.push_back(*wider);
   return c;
 }
 
@@ -643,8 +652,7 @@ DeviceConfiguration ConfigureGivenDevice(const DeviceFamily& family,
                                          const SideChoice& ipsilateral,
                                          double deploymentToleranceMm)
 {
-  if (!(deploymentToleranceMm >= 0.0))
-    throw InputError("deploymentToleranceMm is " + FormatNumber(deploymentToleranceMm) + "; expected ≥ 0 mm.");
+  CheckTolerance(deploymentToleranceMm);
   std::vector<const CatalogueComponent*> bodies;
   DeviceConfiguration c =
     ConfigureWithoutAlternatives(family, chosen, anatomy, ipsilateral, deploymentToleranceMm, bodies, &given);

@@ -61,6 +61,9 @@
 /// **Alternatives**: where a measurement's stated uncertainty (DiameterUncertaintyMm for the
 /// diameters, IliacLengthUncertaintyMm for the landing window) straddles a size boundary, the
 /// size the other side of it (main body, each limb diameter; each limb or extension length).
+/// And where a side's narrowest hold range is under the deployment tolerance while another way of
+/// completing it would hold wider (a limb with an extension where a single limb lands within a
+/// length step of the ostium: LimbOptions.h MarginAlternative), that way.
 ///
 /// Input: the DeviceFamily (validated), the chosen diameters (mm; NaN where the selection chose
 /// none), the ConfigurationAnatomy (mm). Output: DeviceConfiguration. Pure, deterministic.

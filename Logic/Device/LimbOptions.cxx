@@ -151,34 +151,35 @@ double SingleLimbOverlap(double stubEnd, double L, double ovLo, double ovHi, dou
   return value(ov) >= -1e-9 ? ov : highest;
 }
 
-/// The extension's best overlap for the limb's `ov1`, and what it is worth.
-std::pair<double, double> ExtensionOverlap(double stubEnd,
-                                           double L1,
-                                           double L2,
-                                           double ov1,
-                                           double ovLo,
-                                           double ovHi,
-                                           double exLo,
-                                           double exHi,
-                                           double lo,
-                                           double hi,
-                                           double tol)
+/// A limb of length L1 in a stub ending at `stubEnd` (overlap window [ovLo, ovHi]) and an extension
+/// of length L2 in the limb ([exLo, exHi]), landing in [lo, hi], placed for the tolerance `tol`.
+struct LimbStack
 {
-  const auto value = [&](double ov2)
+  double stubEnd = 0.0, L1 = 0.0, L2 = 0.0;
+  double ovLo = 0.0, ovHi = 0.0, exLo = 0.0, exHi = 0.0;
+  double lo = 0.0, hi = 0.0, tol = 0.0;
+  double Distal(double ov1, double ov2) const { return stubEnd - ov1 + L1 - ov2 + L2; }
+  std::vector<HoldRange> Holds(double ov1, double ov2) const
   {
-    const double distal = stubEnd - ov1 + L1 - ov2 + L2;
-    return PlacementValue(
-      { LimbAboveExtensionHold(ov1, ovLo, ovHi, ov2, exLo, exHi), LandingHold(distal, lo, hi, ov2, exLo, exHi) },
-      distal, lo, hi, tol);
-  };
-  const std::vector<Line> lines{ { tol, 0.0 },
-                                 { ov1 - ovLo, 0.0 },
-                                 { ovHi - ov1, 0.0 },
-                                 { exHi, -1.0 },
-                                 { -exLo, 1.0 },
-                                 { hi - stubEnd + ov1 - L1 - L2, 1.0 },
-                                 { stubEnd - ov1 + L1 + L2 - lo, -1.0 } };
-  const double ov2 = ArgMax(value, lines, exLo, exHi);
+    return { LimbAboveExtensionHold(ov1, ovLo, ovHi, ov2, exLo, exHi),
+             LandingHold(Distal(ov1, ov2), lo, hi, ov2, exLo, exHi) };
+  }
+  /// What the placement (ov1, ov2) is worth (PlacementValue).
+  double Value(double ov1, double ov2) const { return PlacementValue(Holds(ov1, ov2), Distal(ov1, ov2), lo, hi, tol); }
+};
+
+/// The extension's best overlap for the limb's `ov1`, and what it is worth.
+std::pair<double, double> ExtensionOverlap(const LimbStack& s, double ov1)
+{
+  const auto value = [&](double ov2) { return s.Value(ov1, ov2); };
+  const std::vector<Line> lines{ { s.tol, 0.0 },
+                                 { ov1 - s.ovLo, 0.0 },
+                                 { s.ovHi - ov1, 0.0 },
+                                 { s.exHi, -1.0 },
+                                 { -s.exLo, 1.0 },
+                                 { s.hi - s.stubEnd + ov1 - s.L1 - s.L2, 1.0 },
+                                 { s.stubEnd - ov1 + s.L1 + s.L2 - s.lo, -1.0 } };
+  const double ov2 = ArgMax(value, lines, s.exLo, s.exHi);
   return { ov2, value(ov2) };
 }
 
@@ -213,20 +214,9 @@ struct FixedPositions
   double distalMm = NaN; ///< the extension's distal edge along the path
 };
 
-/// A limb of length L1 in a stub ending at `stubEnd` (overlap window [ovLo, ovHi]) and an extension
-/// of L2 in it ([exLo, exHi]): the overlaps (ov1, ov2) placed as the file comment says, keeping
-/// what `fixed` gives.
-std::pair<double, double> LimbAndExtensionOverlaps(double stubEnd,
-                                                   double L1,
-                                                   double L2,
-                                                   double ovLo,
-                                                   double ovHi,
-                                                   double exLo,
-                                                   double exHi,
-                                                   double lo,
-                                                   double hi,
-                                                   double tol,
-                                                   const FixedPositions& fixed)
+/// The overlaps (ov1, ov2) of the limb and the extension of `s`, placed as the file comment says,
+/// keeping what `fixed` gives.
+std::pair<double, double> LimbAndExtensionOverlaps(const LimbStack& s, const FixedPositions& fixed)
 {
   // The extension's overlap for the limb's v1 and what the placement is worth: fixed, from the
   // fixed distal edge, or solved.
@@ -234,22 +224,19 @@ std::pair<double, double> LimbAndExtensionOverlaps(double stubEnd,
   {
     double v2 = fixed.extensionOverlapMm;
     if (std::isnan(v2) && std::isfinite(fixed.distalMm))
-      v2 = stubEnd - v1 + L1 + L2 - fixed.distalMm;
+      v2 = s.Distal(v1, 0.0) - fixed.distalMm;
     if (std::isnan(v2))
-      return ExtensionOverlap(stubEnd, L1, L2, v1, ovLo, ovHi, exLo, exHi, lo, hi, tol);
-    const double distal = stubEnd - v1 + L1 - v2 + L2;
-    return { v2, PlacementValue({ LimbAboveExtensionHold(v1, ovLo, ovHi, v2, exLo, exHi),
-                                  LandingHold(distal, lo, hi, v2, exLo, exHi) },
-                                distal, lo, hi, tol) };
+      return ExtensionOverlap(s, v1);
+    return { v2, s.Value(v1, v2) };
   };
   // Without a margin (or where the side cannot land in its window): both overlaps as shallow as
   // possible gives the lowest edge; deepen the limb's first, then the extension's, until the edge
   // is not past W_hi.
-  const double deepest = stubEnd - ovLo + L1 - exLo + L2;
-  double excess = std::max(0.0, deepest - hi);
-  double ov1 = ovLo + std::min(excess, ovHi - ovLo);
-  excess -= ov1 - ovLo;
-  double ov2 = exLo + std::min(excess, exHi - exLo);
+  const double deepest = s.Distal(s.ovLo, s.exLo);
+  double excess = std::max(0.0, deepest - s.hi);
+  double ov1 = s.ovLo + std::min(excess, s.ovHi - s.ovLo);
+  excess -= ov1 - s.ovLo;
+  double ov2 = s.exLo + std::min(excess, s.exHi - s.exLo);
   if (std::isfinite(fixed.limbOverlapMm))
     ov1 = fixed.limbOverlapMm;
   if (std::isfinite(fixed.extensionOverlapMm) || std::isfinite(fixed.distalMm))
@@ -258,15 +245,15 @@ std::pair<double, double> LimbAndExtensionOverlaps(double stubEnd,
   std::vector<double> grid{ ov1 };
   if (std::isnan(fixed.limbOverlapMm))
   {
-    for (double v = ovLo; v < ovHi; v += OverlapGridMm)
+    for (double v = s.ovLo; v < s.ovHi; v += OverlapGridMm)
       grid.push_back(v);
-    grid.push_back(ovHi);
+    grid.push_back(s.ovHi);
   }
   double bestMargin = -std::numeric_limits<double>::infinity(), bestEdge = NaN, best1 = ov1, best2 = ov2;
   for (double v1 : grid)
   {
     const auto [v2, margin] = extensionFor(v1);
-    const double edge = stubEnd - v1 + L1 - v2 + L2;
+    const double edge = s.Distal(v1, v2);
     const bool better =
       margin > bestMargin + 1e-9 ||
       (margin > bestMargin - 1e-9 && (edge > bestEdge + 1e-9 || (edge > bestEdge - 1e-9 && v1 > best1)));
@@ -286,32 +273,24 @@ std::pair<double, double> LimbAndExtensionOverlaps(double stubEnd,
   return { ov1, ov2 };
 }
 
-/// The option of a limb inserted ov1 and an extension inserted ov2 into it.
+/// The option of the limb and the extension of `s` inserted ov1 and ov2.
 SideOption LimbAndExtension(OrderRole role,
                             const CatalogueComponent& limb,
                             const CatalogueComponent& extension,
                             int side,
-                            double stubEndMm,
+                            const LimbStack& s,
                             double ov1,
-                            double ov2,
-                            double ovLo,
-                            double ovHi,
-                            double exLo,
-                            double exHi,
-                            double lo,
-                            double hi,
-                            double toleranceMm)
+                            double ov2)
 {
   SideOption o;
-  o.parts.push_back(Place(role, limb, side, stubEndMm - ov1));
+  o.parts.push_back(Place(role, limb, side, s.stubEnd - ov1));
   o.parts.push_back(Place(OrderRole::IliacExtension, extension, side, o.parts[0].distalMm - ov2));
   o.overlapMm = { ov1, ov2 };
-  o.overlapMaxMm = { ovHi, exHi };
+  o.overlapMaxMm = { s.ovHi, s.exHi };
   o.distalMm = o.parts.back().distalMm;
-  o.landing = Classify(o.distalMm, lo, hi);
-  o.holds = { LimbAboveExtensionHold(ov1, ovLo, ovHi, ov2, exLo, exHi),
-              LandingHold(o.distalMm, lo, hi, ov2, exLo, exHi) };
-  o.margin = MarginOf(o.holds, o.landing, toleranceMm);
+  o.landing = Classify(o.distalMm, s.lo, s.hi);
+  o.holds = s.Holds(ov1, ov2);
+  o.margin = MarginOf(o.holds, o.landing, s.tol);
   return o;
 }
 
@@ -343,7 +322,8 @@ std::vector<SideOption> LimbOptions(const DeviceFamily& family,
                                     double landingDiameterMm,
                                     double lo,
                                     double hi,
-                                    double toleranceMm)
+                                    double toleranceMm,
+                                    bool everyCombination)
 {
   const IfuLimit& overlap = family.junctions.overlapMm;
   std::vector<SideOption> options;
@@ -370,7 +350,7 @@ std::vector<SideOption> LimbOptions(const DeviceFamily& family,
   const bool closeEnough =
     std::any_of(options.begin(), options.end(),
                 [&](const SideOption& o) { return o.landing == Landing::InWindow && hi - o.distalMm <= lengthStep; });
-  if (closeEnough)
+  if (closeEnough && !everyCombination)
     return options;
   const std::size_t singles = options.size();
   for (std::size_t i = 0; i < singles; ++i)
@@ -385,10 +365,9 @@ std::vector<SideOption> LimbOptions(const DeviceFamily& family,
       const auto [exLo, exHi] = OverlapWindow(overlap, std::min(L1, L2 - SameEdgeMm));
       if (exHi < exLo)
         continue;
-      const auto [ov1, ov2] =
-        LimbAndExtensionOverlaps(stubEndMm, L1, L2, ovLo, ovHi, exLo, exHi, lo, hi, toleranceMm, {});
-      options.push_back(LimbAndExtension(role, single.parts[0].item, *extension, side, stubEndMm, ov1, ov2, ovLo, ovHi,
-                                         exLo, exHi, lo, hi, toleranceMm));
+      const LimbStack stack{ stubEndMm, L1, L2, ovLo, ovHi, exLo, exHi, lo, hi, toleranceMm };
+      const auto [ov1, ov2] = LimbAndExtensionOverlaps(stack, {});
+      options.push_back(LimbAndExtension(role, single.parts[0].item, *extension, side, stack, ov1, ov2));
     }
   return options;
 }
@@ -482,11 +461,65 @@ SideOption GivenSideOption(const DeviceFamily& family,
   fixed.extensionOverlapMm = extension.overlapMm;
   if (std::isfinite(extension.distalEdgeAboveInternalIliacMm))
     fixed.distalMm = hi - extension.distalEdgeAboveInternalIliacMm;
-  const auto [ov1, ov2] =
-    LimbAndExtensionOverlaps(stubEndMm, L.lengthMm, E.lengthMm, ovLo, ovHi, exLo, exHi, lo, hi, toleranceMm, fixed);
+  const LimbStack stack{ stubEndMm, L.lengthMm, E.lengthMm, ovLo, ovHi, exLo, exHi, lo, hi, toleranceMm };
+  const auto [ov1, ov2] = LimbAndExtensionOverlaps(stack, fixed);
   check(ov1, limb, limbRoom, into);
   check(ov2, extension, std::min(L.lengthMm, E.lengthMm - SameEdgeMm), "the limb");
-  return LimbAndExtension(role, L, E, side, stubEndMm, ov1, ov2, ovLo, ovHi, exLo, exHi, lo, hi, toleranceMm);
+  return LimbAndExtension(role, L, E, side, stack, ov1, ov2);
+}
+
+std::optional<SizeAlternative> MarginAlternative(const DeviceFamily& family, const DeviceConfiguration& c, int side)
+{
+  std::vector<const ConfiguredComponent*> parts;
+  for (const ConfiguredComponent& part : c.components)
+    if (part.role != OrderRole::MainBody && part.side == side)
+      parts.push_back(&part);
+  if (!c.configured || parts.empty() || c.components.empty())
+    return std::nullopt;
+  const double tol = c.deploymentToleranceMm;
+  double chosen = tol;
+  for (const ConfiguredComponent* part : parts)
+  {
+    HoldRange h;
+    h.aboveMm = part->holdsAboveMm;
+    h.belowMm = part->holdsBelowMm;
+    h.aboveLimit = part->holdsAboveLimit;
+    h.belowLimit = part->holdsBelowLimit;
+    chosen = std::min(chosen, h.Narrowest());
+  }
+  chosen = std::max(0.0, chosen);
+  if (chosen >= tol - SameMarginMm)
+    return std::nullopt;
+  const CatalogueComponent& body = c.components.front().item;
+  const bool ipsilateral = side == c.ipsilateralSide;
+  const std::vector<SideOption> options =
+    LimbOptions(family, ipsilateral ? OrderRole::IpsilateralLimb : OrderRole::ContralateralLimb, side,
+                body.flowDividerMm, ipsilateral ? body.lengthMm : body.gateEndMm, parts.back()->item.distalDiameterMm,
+                c.landingLowMm[std::size_t(side)], c.landingHighMm[std::size_t(side)], tol, true);
+  const SideOption* best = nullptr;
+  for (const SideOption& o : options)
+    if (o.landing == Landing::InWindow && o.margin > chosen + SameMarginMm &&
+        (!best || o.margin > best->margin + SameMarginMm ||
+         (o.margin > best->margin - SameMarginMm && o.parts.size() < best->parts.size())))
+      best = &o;
+  if (!best)
+    return std::nullopt;
+  const auto names = [](const auto& list, const auto& order)
+  {
+    std::string text;
+    for (const auto& part : list)
+      text += (text.empty() ? "" : " and ") + order(part);
+    return text;
+  };
+  const std::string mine = names(parts, [](const ConfiguredComponent* p) { return p->OrderText(); });
+  const std::string theirs = names(best->parts, [](const ConfiguredComponent& p) { return p.OrderText(); });
+  const std::string name = std::string(SideName(side)) + " side";
+  return SizeAlternative{ name, mine, theirs,
+                          "the " + name + " would hold at least " + FormatNumber(best->margin) +
+                            " mm up and down with " + theirs + ", where the " + mine + " holds " +
+                            FormatNumber(chosen) + " mm (the narrowest range, up to the " + FormatNumber(tol) +
+                            " mm deployment tolerance); the plan orders a single limb where one lands within a "
+                            "length step of the ostium" };
 }
 
 } // namespace sgp

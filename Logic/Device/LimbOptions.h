@@ -93,7 +93,8 @@ ConfiguredComponent Place(OrderRole role, const CatalogueComponent& item, int si
 /// end) with an insertable stretch from `stubStartMm` (the flow divider): one limb, or — only when
 /// no single limb lands in the window within the length step of W_hi (the largest gap between this
 /// diameter's limb lengths) — also a limb and an extension, each placed as the file comment says
-/// for the deployment tolerance `toleranceMm` (≥ 0).
+/// for the deployment tolerance `toleranceMm` (≥ 0); with `everyCombination`, the limbs with an
+/// extension too, whatever the single limbs reach.
 std::vector<SideOption> LimbOptions(const DeviceFamily& family,
                                     OrderRole role,
                                     int side,
@@ -102,7 +103,8 @@ std::vector<SideOption> LimbOptions(const DeviceFamily& family,
                                     double landingDiameterMm,
                                     double lo,
                                     double hi,
-                                    double toleranceMm);
+                                    double toleranceMm,
+                                    bool everyCombination = false);
 
 /// The side completed with the surgeon's `limb` (given) and `extension` (given or not), each at its
 /// given position (GivenConfiguration.h: an overlap, or the last part's distal edge above the
@@ -124,6 +126,13 @@ SideOption GivenSideOption(const DeviceFamily& family,
 
 /// The body's own leg landing on its side (its end at `legEndMm`), with its hold range.
 SideOption BodyLegOption(double legEndMm, double lo, double hi, double toleranceMm);
+
+/// Another way to complete `side` of `c` (configured by the plan) whose narrowest hold range,
+/// capped at the tolerance, is wider by more than SameMarginMm than the side's own when that is
+/// under the tolerance: among every single limb of the side's landing diameter and every limb with
+/// an extension (LimbOptions with everyCombination) that lands in the window, the widest, then the
+/// one with fewer parts; with the sentence that names it. nullopt when none is wider.
+std::optional<SizeAlternative> MarginAlternative(const DeviceFamily& family, const DeviceConfiguration& c, int side);
 
 /// One side's best option (`bodyAlone`, when given, is the body's own leg landing there): in its
 /// window first, then the widest margin (to 0.1 mm), then the lowest edge not past W_hi (within

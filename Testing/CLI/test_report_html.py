@@ -62,15 +62,7 @@ def screenshot(exe, url, out, profile):
     result = chromium(exe, [f"--window-size={WINDOW[0]},{WINDOW[1]}", f"--screenshot={out}", url], profile)
     if not os.path.exists(out):
         return None, result
-    from vtkmodules.vtkIOImage import vtkPNGReader
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    reader = vtkPNGReader()
-    reader.SetFileName(out)
-    reader.Update()
-    image = reader.GetOutput()
-    w, h, _ = image.GetDimensions()
-    pixels = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[::-1]  # VTK's rows run upward
-    return pixels, result
+    return screenshot_pixels(out), result
 
 
 def readme_picture(exe, report, workdir, profile, out):
@@ -145,7 +137,7 @@ def decode_png(data_uri, path):
     reader.Update()
     image = reader.GetOutput()
     w, h, _ = image.GetDimensions()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[::-1]
+    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[::-1]  # VTK's rows run upward
 
 
 def check_order_and_graft(ok, dom, names, returned, deployment, workdir):
@@ -267,6 +259,7 @@ def check_hold_figures(ok, dom, deployment, workdir, exe, profile):
 
 
 def screenshot_pixels(path):
+    """The PNG at path as rows x columns x channels, row 0 the top."""
     from vtkmodules.vtkIOImage import vtkPNGReader
     from vtkmodules.util.numpy_support import vtk_to_numpy
     reader = vtkPNGReader()
@@ -274,7 +267,7 @@ def screenshot_pixels(path):
     reader.Update()
     image = reader.GetOutput()
     w, h, _ = image.GetDimensions()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[::-1]
+    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[::-1]  # VTK's rows run upward
 
 
 def run_checks(args, workdir, profile):

@@ -14,6 +14,7 @@
 #include "ConfigurationFixtures.h"
 #include "Device/CompareConfigurations.h"
 #include "Device/GivenConfiguration.h"
+#include "Device/LimbOptions.h"
 
 namespace sgp
 {
@@ -372,6 +373,93 @@ TEST(GivenConfiguration, EveryBadEntry_OneErrorNamingItAndWhatTheCatalogueOffers
       EXPECT_TRUE(Contains(message, part)) << bad.what << ": " << message;
   }
   EXPECT_THROW(ParseGivenRole("aorticCuff", "components[1].role"), InputError);
+}
+
+} // namespace
+} // namespace sgp
+
+namespace sgp
+{
+namespace
+{
+
+/// Endurant II with a 60 mm contralateral gate stub (30 mm of play over the 30 mm minimum overlap)
+/// and only the 82 and 199 mm limbs landing at 13 mm: a single limb lands within the length step of
+/// the ostium but not always with a margin, where a limb with the 82 mm extension can.
+DeviceFamily SparseLimbs()
+{
+  DeviceFamily f = Family("Endurant II");
+  std::vector<CatalogueComponent> kept;
+  for (CatalogueComponent c : f.components)
+  {
+    if (c.role == ComponentRole::MainBody)
+    {
+      if (c.flowDividerMm + 60.0 >= c.lengthMm)
+        continue;
+      c.gateEndMm = c.flowDividerMm + 60.0;
+    }
+    if (c.role == ComponentRole::Limb && c.distalDiameterMm == 13.0 && c.lengthMm != 82.0 && c.lengthMm != 199.0)
+      continue;
+    kept.push_back(c);
+  }
+  f.components = kept;
+  return f;
+}
+
+TEST(ConfigureDevice, NarrowSideWithAWiderWay_TheWayIsNamedWithTheRangeItHolds)
+{
+  const DeviceFamily family = SparseLimbs();
+  int named = 0;
+  for (double commonIliac = 20.0; commonIliac <= 110.0; commonIliac += 1.0)
+  {
+    const DeviceConfiguration c =
+      ConfigureDevice(family, Chosen(25.0, 13.0), Anatomy(130.0, commonIliac, commonIliac, 11.0), Right);
+    if (!c.configured)
+      continue;
+    for (int side = 0; side < 2; ++side)
+    {
+      // The truth by brute force: the side's own narrowest range, and every way of completing it.
+      double own = c.deploymentToleranceMm;
+      bool hasParts = false;
+      for (const ConfiguredComponent& part : c.components)
+        if (part.role != OrderRole::MainBody && part.side == side)
+        {
+          HoldRange h{ part.holdsAboveMm, part.holdsBelowMm, part.holdsAboveLimit, part.holdsBelowLimit };
+          own = std::min(own, std::max(0.0, h.Narrowest()));
+          hasParts = true;
+        }
+      const CatalogueComponent& body = c.components.front().item;
+      const bool ipsi = side == c.ipsilateralSide;
+      double widest = -1.0;
+      const SideOption* best = nullptr;
+      const std::vector<SideOption> options =
+        LimbOptions(family, ipsi ? OrderRole::IpsilateralLimb : OrderRole::ContralateralLimb, side, body.flowDividerMm,
+                    ipsi ? body.lengthMm : body.gateEndMm, 13.0, c.landingLowMm[side], c.landingHighMm[side],
+                    c.deploymentToleranceMm, true);
+      for (const SideOption& o : options)
+        if (o.landing == Landing::InWindow && o.margin > widest)
+        {
+          widest = o.margin;
+          best = &o;
+        }
+      const std::string name = std::string(side == 0 ? "right" : "left") + " side";
+      const auto alternative = std::find_if(c.alternatives.begin(), c.alternatives.end(),
+                                            [&](const SizeAlternative& a) { return a.component == name; });
+      // Named exactly when the side holds under the tolerance and another way holds wider (0.05 mm:
+      // the ranges are reported to 0.1 mm).
+      const bool wider = hasParts && own < c.deploymentToleranceMm - 0.05 && widest > own + 0.05;
+      ASSERT_EQ(alternative != c.alternatives.end(), wider)
+        << "common iliac " << commonIliac << ", " << name << ": own " << own << ", widest " << widest;
+      if (!wider)
+        continue;
+      ++named;
+      EXPECT_TRUE(Contains(alternative->text, "would hold at least " + FormatNumber(widest) + " mm up and down"))
+        << alternative->text;
+      for (const ConfiguredComponent& part : best->parts)
+        EXPECT_TRUE(Contains(alternative->alternative, part.item.code)) << alternative->alternative;
+    }
+  }
+  EXPECT_GT(named, 0) << "no anatomy of the series has a narrow side a limb with an extension widens";
 }
 
 } // namespace
