@@ -62,7 +62,7 @@ def screenshot(exe, url, out, profile):
     result = chromium(exe, [f"--window-size={WINDOW[0]},{WINDOW[1]}", f"--screenshot={out}", url], profile)
     if not os.path.exists(out):
         return None, result
-    return screenshot_pixels(out), result
+    return read_png(out), result
 
 
 def readme_picture(exe, report, workdir, profile, out):
@@ -130,14 +130,7 @@ def decode_png(data_uri, path):
     import base64
     with open(path, "wb") as handle:
         handle.write(base64.b64decode(data_uri.split(",", 1)[1]))
-    from vtkmodules.vtkIOImage import vtkPNGReader
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    w, h, _ = image.GetDimensions()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[::-1]  # VTK's rows run upward
+    return read_png(path)
 
 
 def check_order_and_graft(ok, dom, names, returned, deployment, workdir):
@@ -244,7 +237,7 @@ def check_hold_figures(ok, dom, deployment, workdir, exe, profile):
         result = chromium(exe, [f"--window-size={width},{height}", f"--screenshot={out}", "file://" + page], profile)
         if not ok(os.path.exists(out), f"{hold['name']}: Chromium draws the hold figure", result.stderr[-300:]):
             continue
-        pixels = screenshot_pixels(out)
+        pixels = read_png(out)
         ok(not blank(pixels), f"{hold['name']}: the hold figure is not blank")
         column = int(round((bar_x + 2.0 - view_left) * HOLD_SCALE))  # the bar's middle (4 mm wide)
         rgb = pixels[:, column, :3].astype(int)
@@ -258,7 +251,7 @@ def check_hold_figures(ok, dom, deployment, workdir, exe, profile):
                f"green rows {green[:1]}..{green[-1:]}")
 
 
-def screenshot_pixels(path):
+def read_png(path):
     """The PNG at path as rows x columns x channels, row 0 the top."""
     from vtkmodules.vtkIOImage import vtkPNGReader
     from vtkmodules.util.numpy_support import vtk_to_numpy
