@@ -12,6 +12,9 @@ On the demo phantom (scripts/demo.sh's anatomy):
   "N mm longer" with where its side lands; where the consequence says it covers the internal
   iliac ostium, the simulated fit check finds that ostium covered (and at least one side does on
   this phantom: its limbs end 5-10 mm above the ostia);
+- on a 20 mm neck (the plan orders an Endurant II), the main body one length shorter with the
+  contralateral limb left to the plan: the gate's clearance above the bifurcation changes by the two
+  bodies' gate ends (10 mm), and the contralateral side's difference says where the limb lands;
 - the main body from the other side with the positions left to the plan: the limbs swap roles
   (the report's components), and the first difference says so;
 - bad configurations: one ERROR line naming the entry and what was expected, no output left; the
@@ -23,6 +26,7 @@ import argparse
 import copy
 import json
 import os
+import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -70,6 +74,59 @@ def next_longer(catalog, family, code):
                       and i["distalDiameterMm"] == m["distalDiameterMm"] and i["lengthMm"] > m["lengthMm"]]
             return min(longer, key=lambda i: i["lengthMm"]) if longer else None
     return None
+
+
+def catalogue_item(catalog, code):
+    return next(i for f in catalog["families"] for g in ("mainBodies", "limbs", "iliacExtensions")
+                for i in f.get(g, {}).get("items", []) if i["code"] == code)
+
+
+def shorter_main_body(cli, workdir, catalog, phantom):
+    volume = os.path.join(workdir, "neck20.nrrd")
+    params = os.path.join(workdir, "neck20.params")
+    result = run([phantom, "--returnparameterfile", params, "--includeBone", "--includeKidneys", "--wallThicknessMm",
+                  "1.5", "--thrombusMaxThicknessMm", "12", "--tissueHu", "-100", "--rightIliacDiameterMm", "14",
+                  "--leftIliacDiameterMm", "14", "--neckDiameterMm", "20", volume], workdir)
+    if not check(result.returncode == 0, "the 20 mm neck phantom is generated", result.stderr[:400]):
+        return
+    seed = sem_rules.read_return_parameters(params)["seedRas"]
+    outcome = plan(cli, workdir, "neck20", volume, seed, [])
+    if not outcome:
+        return
+    configuration = outcome[2]
+    body = catalogue_item(catalog, configuration["components"][0]["code"])
+    shorter = [i for f in catalog["families"] if f["name"] == configuration["family"] for i in f["mainBodies"]["items"]
+               if i["code"] and i["diameterMm"] == body["diameterMm"] and i["distalDiameterMm"] == body["distalDiameterMm"]
+               and i["lengthMm"] < body["lengthMm"]]
+    shorter = max(shorter, key=lambda i: i["lengthMm"]) if shorter else None
+    if not check(configuration["family"] == "Endurant II" and shorter and shorter["gateEndMm"] != body["gateEndMm"],
+                 "20 mm neck: an Endurant II body with a shorter sibling whose gate ends elsewhere",
+                 f"{configuration['family']} {body['code']} {shorter}"):
+        return
+    contralateral = "left" if configuration["mainBodySide"] == "right" else "right"
+    edited = copy.deepcopy(configuration)
+    edited["components"][0]["code"] = shorter["code"]
+    edited["components"] = [c for c in edited["components"] if c.get("side") != contralateral]
+    path = write(workdir, "neck20-shorter.json", edited)
+    result = plan(cli, workdir, "neck20-shorter", volume, seed, ["--configuration", path])
+    if not result:
+        return
+    items = result[0]["deployment"]["differences"]["items"]
+    first = items[0] if items else {}
+    numbers = re.findall(r"ends ([0-9.]+) mm above the aortic bifurcation \(recommended: ([0-9.]+) mm\)",
+                         first.get("consequence", ""))
+    moved = body["gateEndMm"] - shorter["gateEndMm"]
+    # The texts carry 0.1 mm: the two clearances' difference within 0.1 of the gate ends'.
+    check(first.get("what") == "main body" and first["change"].startswith(
+        "%g mm shorter (%s instead of %s)" % (body["lengthMm"] - shorter["lengthMm"], shorter["code"], body["code"]))
+        and numbers and abs(float(numbers[0][0]) - float(numbers[0][1]) - moved) <= 0.1 + 1e-9,
+        f"main body one length shorter: the gate's clearance above the bifurcation changes by {moved:g} mm",
+        str(first)[:500])
+    needed = [c for c in result[0]["deployment"]["components"] if c["role"] == "contralateralLimb"]
+    named = [d for d in items if d["what"] in (contralateral + " limb", contralateral + " side")]
+    check(needed and named and f"the {contralateral} side " in named[0]["consequence"],
+          "main body one length shorter: the contralateral limb it needs is ordered and where it lands is named",
+          f"{needed[:1]} {named[:1]}")
 
 
 def length_of(catalog, code):
@@ -201,6 +258,12 @@ def main():
         items = w_report["deployment"]["differences"]["items"]
         check(items and items[0]["what"] == "main body side" and "swap roles" in items[0]["consequence"],
               "the main body from the other side: the first difference says the limbs swap roles", str(items)[:400])
+
+    # A main body one length shorter, on a phantom whose plan orders an Endurant II (a 20 mm neck: its
+    # 145 mm body's gate ends at 84 mm, the 124 mm body's at 74 mm), the contralateral limb left to
+    # the plan: the gate's clearance above the bifurcation grows by the gate ends' difference, and the
+    # contralateral side's difference names where the limb it needs lands.
+    shorter_main_body(cli, workdir, catalog, args.phantom)
 
     # Bad configurations: one ERROR line, nothing written; the schema agrees where the rule is its.
     limb = next(i for i, c in enumerate(configuration["components"]) if c["role"] == "limb")
