@@ -33,6 +33,13 @@ std::string RoleWords(ComponentRole role)
   return IdentifierWords(ToString(role));
 }
 
+/// "a limb", "an iliac extension", "a main body".
+std::string ARole(ComponentRole role)
+{
+  const std::string words = RoleWords(role);
+  return (words.front() == 'i' ? "an " : "a ") + words;
+}
+
 std::string Opening(const GivenConfiguration& given, const std::string& where)
 {
   return "Configuration '" + given.origin + "'" + (where.empty() ? "" : ", " + where);
@@ -100,7 +107,7 @@ const CatalogueComponent* Resolve(const GivenConfiguration& given, const DeviceF
       {
         if (item.role != c.role)
           throw InputError(opening + ": code '" + c.code + "' is " + family.name + "'s " + RoleWords(item.role) +
-                           ", not a " + RoleWords(c.role) + "; expected a " + RoleWords(c.role) +
+                           ", not " + ARole(c.role) + "; expected " + ARole(c.role) +
                            " code, one of: " + Offer(family, c.role, c) + ".");
         for (const auto& [value, field] :
              { std::pair{ c.diameterMm, item.diameterMm }, std::pair{ c.distalDiameterMm, item.distalDiameterMm },
@@ -118,7 +125,7 @@ const CatalogueComponent* Resolve(const GivenConfiguration& given, const DeviceF
   const bool byDiameter =
     c.role == ComponentRole::MainBody ? std::isfinite(c.diameterMm) : std::isfinite(c.distalDiameterMm);
   if (!byDiameter || !std::isfinite(c.lengthMm))
-    throw InputError(opening + ": a " + RoleWords(c.role) + " needs its code, or its " +
+    throw InputError(opening + ": " + ARole(c.role) + " needs its code, or its " +
                      (c.role == ComponentRole::MainBody ? "diameterMm" : "distalDiameterMm") + " and lengthMm; saw " +
                      (SizeText(c).empty() ? std::string("neither") : SizeText(c)) + ".");
   std::vector<const CatalogueComponent*> found;
@@ -178,19 +185,19 @@ ResolvedConfiguration ResolveGivenConfiguration(const GivenConfiguration& given,
     const bool body = c.role == ComponentRole::MainBody;
     if (body != (c.side < 0))
       fail(c, body ? "a main body has no side (it is given by mainBodySide); expected no 'side'."
-                   : "a " + RoleWords(c.role) + " needs its side; expected 'side': 'right' or 'left'.");
+                   : ARole(c.role) + " needs its side; expected 'side': 'right' or 'left'.");
     if (body && (std::isfinite(c.overlapMm) || std::isfinite(c.distalEdgeAboveInternalIliacMm)))
       fail(c, "a main body's position is proximalEdgeBelowLowestRenalMm; overlapMm and "
               "distalEdgeAboveInternalIliacMm are for limbs and extensions.");
     if (!body && std::isfinite(c.proximalEdgeBelowLowestRenalMm))
       fail(c, "proximalEdgeBelowLowestRenalMm is the main body's position; expected overlapMm or "
-              "distalEdgeAboveInternalIliacMm for a " +
-                RoleWords(c.role) + ".");
+              "distalEdgeAboveInternalIliacMm for " +
+                ARole(c.role) + ".");
     if (std::isfinite(c.overlapMm) && std::isfinite(c.distalEdgeAboveInternalIliacMm))
       fail(c, "overlapMm " + CompactNumber(c.overlapMm) + " and distalEdgeAboveInternalIliacMm " +
                 CompactNumber(c.distalEdgeAboveInternalIliacMm) + " both given; expected one position.");
     if (std::isfinite(c.overlapMm) && c.overlapMm <= 0.0)
-      fail(c, "overlapMm is " + CompactNumber(c.overlapMm) + " mm: a " + RoleWords(c.role) +
+      fail(c, "overlapMm is " + CompactNumber(c.overlapMm) + " mm: " + ARole(c.role) +
                 " that does not overlap cannot reach what it is inserted into; expected more than 0 mm (the family "
                 "needs at least " +
                 CompactNumber(family->junctions.overlapMm.min) + " mm).");
