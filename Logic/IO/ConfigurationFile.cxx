@@ -9,6 +9,7 @@
 #include "Common/Errors.h"
 #include "Common/Text.h"
 #include "IO/JsonText.h"
+#include "IO/ReadTextFile.h"
 
 namespace sgp
 {
@@ -144,14 +145,10 @@ GivenConfiguration ParseConfiguration(const std::string& text, const std::string
 
 GivenConfiguration ReadConfiguration(const std::string& path)
 {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in)
-    throw InputError("Cannot read the configuration '" + path +
-                     "': the file does not exist or is not readable; give the path of a configuration file "
-                     "(one written by --outputConfiguration, edited).");
-  return ParseConfiguration(text.str(), path);
+  return ParseConfiguration(ReadTextFile(path, "configuration",
+                                         "a configuration file "
+                                         "(one written by --outputConfiguration, edited)"),
+                            path);
 }
 
 std::string ConfigurationJson(const GivenConfiguration& configuration, const std::string& description)

@@ -11,6 +11,7 @@
 #include "Common/Errors.h"
 #include "Common/Text.h"
 #include "IO/JsonText.h"
+#include "IO/ReadTextFile.h"
 
 namespace sgp
 {
@@ -345,14 +346,10 @@ DeviceCatalog ParseDeviceCatalog(const std::string& text, const std::string& ori
 
 DeviceCatalog ReadDeviceCatalog(const std::string& path)
 {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in)
-    throw InputError("Cannot read the device catalogue '" + path +
-                     "': the file does not exist or is not readable; give the path of a devices.json "
-                     "(the shipped one is Resources/devices.json).");
-  return ParseDeviceCatalog(text.str(), path);
+  return ParseDeviceCatalog(ReadTextFile(path, "device catalogue",
+                                         "a devices.json "
+                                         "(the shipped one is Resources/devices.json)"),
+                            path);
 }
 
 } // namespace sgp

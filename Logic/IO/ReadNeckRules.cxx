@@ -11,6 +11,7 @@
 #include "Common/Errors.h"
 #include "Common/Text.h"
 #include "IO/JsonText.h"
+#include "IO/ReadTextFile.h"
 #include "IO/ResourcePath.h"
 
 namespace sgp
@@ -228,14 +229,10 @@ NeckRuleSet ParseNeckRules(const std::string& text, const std::string& origin)
 
 NeckRuleSet ReadNeckRules(const std::string& path)
 {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in)
-    throw InputError("Cannot read the hostile-neck rules '" + path +
-                     "': the file does not exist or is not readable; give the path of a rule file "
-                     "(the shipped one is Resources/hostile-neck-rules.json).");
-  return ParseNeckRules(text.str(), path);
+  return ParseNeckRules(ReadTextFile(path, "hostile-neck rules",
+                                     "a rule file "
+                                     "(the shipped one is Resources/hostile-neck-rules.json)"),
+                        path);
 }
 
 std::string DefaultNeckRulesPath(const std::string& argv0)
