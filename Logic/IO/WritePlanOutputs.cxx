@@ -244,10 +244,10 @@ void WritePlanOutputs(const RepairPlan& plan,
   if (!paths.configuration.empty())
   {
     Require(plan, PlanStage::Device, "outputConfiguration");
-    const DeviceConfiguration* c = plan.Configuration();
-    if (!c || !c->configured)
+    if (!ConfigurationNotWritten(plan).empty())
       throw std::logic_error("WritePlanOutputs: outputConfiguration was asked for, but no configuration was made "
                              "(the front end leaves it out: ConfigurationNotWritten)");
+    const DeviceConfiguration* c = plan.Configuration();
     WriteTextFile(
       ConfigurationJson(GivenFromConfiguration(*c, plan.deploymentTargetAbscissaMm - plan.measurements.site.abscissaMm),
                         std::string(c->given ? "Given" : "Recommended") + " configuration for " + run.inputVolume),

@@ -411,18 +411,16 @@ void ChooseAndSimulateDevice(const WallDistanceField& wall,
       }
   }
   plan.selection = SelectDevice(sizing, params.catalog, params.selection, lengths ? &*lengths : nullptr);
+  WarnSizedOnLumen(plan.selection, report);
+  plan.orderedFamily = FamilyForMainBody(plan.selection);
   if (plan.recommendation)
   {
     const int recommended = FamilyForMainBody(*plan.recommendation);
-    const int given = FamilyForMainBody(plan.selection);
-    if (recommended >= 0 && given >= 0)
-      plan.configurationDifferences =
-        CompareConfigurations(plan.selection.families[std::size_t(given)].configuration,
-                              plan.recommendation->families[std::size_t(recommended)].configuration,
-                              plan.deploymentTargetAbscissaMm - recommendedTargetMm);
+    if (recommended >= 0 && plan.Configuration())
+      plan.configurationDifferences = CompareConfigurations(
+        *plan.Configuration(), plan.recommendation->families[std::size_t(recommended)].configuration,
+        plan.deploymentTargetAbscissaMm - recommendedTargetMm);
   }
-  WarnSizedOnLumen(plan.selection, report);
-  plan.orderedFamily = FamilyForMainBody(plan.selection);
   AddOrderRows(plan);
   if (!siteKnown)
   {
