@@ -228,7 +228,8 @@ TEST_P(ConfiguredPhantom, LimbsLandAboveTheTrueInternalIliacOstium)
   }
   else
     EXPECT_TRUE(c->findings.empty()) << c->findings.front().text;
-  const DeviceFamily& family = *FindDeviceFamily(testing::ShippedPlanParams().catalog, c->family);
+  const PlanParams shipped = testing::ShippedPlanParams(); // the family below points into it
+  const DeviceFamily& family = *FindDeviceFamily(shipped.catalog, c->family);
   const Point3 B = TruthLandmark(phantom, "aorticBifurcation");
   for (int side = 0; side < 2; ++side)
   {
@@ -814,7 +815,8 @@ TEST(Deployment, OverlapShortOnTheFabric_TypeIIIFinding)
   };
   EXPECT_FALSE(typeIII(plan.fitCheck));
   const DeviceConfiguration& c = *plan.Configuration();
-  const DeviceFamily& family = *FindDeviceFamily(testing::ShippedPlanParams().catalog, c.family);
+  const PlanParams shipped = testing::ShippedPlanParams(); // the family below points into it
+  const DeviceFamily& family = *FindDeviceFamily(shipped.catalog, c.family);
   DeployedGraft graft = plan.graft;
   std::size_t limb = 0;
   while (limb < c.components.size() && c.components[limb].role != OrderRole::ContralateralLimb)
