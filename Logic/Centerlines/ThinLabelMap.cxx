@@ -8,6 +8,7 @@
 #include "Centerlines/SimplePoint.h"
 #include "Common/DistanceInsideMask.h"
 #include "Common/Errors.h"
+#include "Common/HugePages.h"
 #include "Common/ImageGeometry.h"
 #include "Common/IndexBox.h"
 #include "Common/MaskGrid.h"
@@ -281,7 +282,9 @@ LabelImage::Pointer SkeletonToImage(const Skeleton& skeleton, const LabelImage& 
   auto image = LabelImage::New();
   image->CopyInformation(&reference);
   image->SetRegions(reference.GetLargestPossibleRegion());
-  image->Allocate(true);
+  image->Allocate(false);
+  AdviseHugePagesOfImage(*image);
+  image->FillBuffer(0);
   for (const auto& index : skeleton.voxels)
     image->SetPixel(index, 1);
   return image;

@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "Common/HugePages.h"
 #include "Common/MaskGrid.h"
 
 namespace sgp
@@ -41,6 +42,13 @@ struct DefaultInitAllocator : std::allocator<T>
   template<typename U>
   DefaultInitAllocator(const DefaultInitAllocator<U>&) noexcept
   {
+  }
+  /// Storage advised for huge pages (HugePages.h) before its first write.
+  T* allocate(std::size_t n)
+  {
+    T* p = std::allocator<T>::allocate(n);
+    AdviseHugePages(p, n * sizeof(T));
+    return p;
   }
   template<typename U>
   void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>)

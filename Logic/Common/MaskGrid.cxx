@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "Common/HugePages.h"
 #include "Common/TwoCores.h"
 
 namespace sgp
@@ -70,8 +71,8 @@ void Flood(const MaskGrid& grid, std::uint8_t value, std::vector<long>& queue, s
 
 MaskGrid::MaskGrid(const std::array<long, 3>& boxSize)
   : size(boxSize)
-  , voxels(static_cast<std::size_t>(boxSize[0] * boxSize[1] * boxSize[2]), 0)
 {
+  AssignAdvised(voxels, static_cast<std::size_t>(boxSize[0] * boxSize[1] * boxSize[2]), std::uint8_t(0));
 }
 
 long MaskGrid::CountForeground() const
@@ -189,7 +190,8 @@ MaskGrid ConnectedComponent(const MaskGrid& mask, long seedFlat)
 
 std::vector<int> LabelComponents(const MaskGrid& mask, std::vector<long>& sizes)
 {
-  std::vector<int> labels(mask.voxels.size(), 0);
+  std::vector<int> labels;
+  AssignAdvised(labels, mask.voxels.size(), 0);
   sizes.clear();
   std::vector<long> queue;
   for (long flat = 0; flat < mask.Count(); ++flat)

@@ -12,6 +12,7 @@
 
 #include "Common/Errors.h"
 #include "Common/Format.h"
+#include "Common/HugePages.h"
 #include "IO/InflateGzipNrrd.h"
 #include "IO/RegisterImageIOFactories.h"
 
@@ -139,6 +140,7 @@ typename Image::Pointer ReadVolumeFile(const std::string& path)
       image->CopyInformation(reader->GetOutput());
       image->SetRegions(reader->GetOutput()->GetLargestPossibleRegion());
       image->Allocate(false);
+      AdviseHugePagesOfImage(*image);
       if (InflateGzipNrrdInto(path, *image))
         return image;
     }

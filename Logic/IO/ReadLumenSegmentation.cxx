@@ -18,6 +18,7 @@
 #include <itkVectorImage.h>
 
 #include "Common/Errors.h"
+#include "Common/HugePages.h"
 #include "IO/InflateGzipNrrd.h"
 #include "IO/RegisterImageIOFactories.h"
 
@@ -95,6 +96,7 @@ LabelImage::Pointer MaskLike(Image& image)
   mask->CopyInformation(&image);
   mask->SetRegions(image.GetLargestPossibleRegion());
   mask->Allocate();
+  AdviseHugePagesOfImage(*mask);
   return mask;
 }
 

@@ -13,6 +13,7 @@
 #include "Common/CheckRange.h"
 #include "Common/Errors.h"
 #include "Common/Format.h"
+#include "Common/HugePages.h"
 #include "Phantom/AorticWall.h"
 #include "Phantom/PhantomAnatomy.h"
 #include "Phantom/PhantomRaster.h"
@@ -159,8 +160,10 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
   SampleVessels(anatomy, anatomy.truth);
   const Grid grid = MakeGrid(p, AnatomyBounds(anatomy));
   const long count = grid.size[0] * grid.size[1] * grid.size[2];
-  std::vector<float> contrast(static_cast<std::size_t>(count), 0.0f);
-  std::vector<unsigned char> labels(static_cast<std::size_t>(count), TissueLabel);
+  std::vector<float> contrast;
+  std::vector<unsigned char> labels;
+  AssignAdvised(contrast, static_cast<std::size_t>(count), 0.0f);
+  AssignAdvised(labels, static_cast<std::size_t>(count), static_cast<unsigned char>(TissueLabel));
   const double reach = 4.0 * p.blurSigmaMm + grid.spacing.norm();
 
   // With a wall the lumens are drawn over it linearly (PhantomRaster.h): `layer` holds the sharp
@@ -170,7 +173,7 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
   if (anatomy.wall)
   {
     ReportProgress(progress, 0.0, "Vessel wall");
-    layer.assign(static_cast<std::size_t>(count), static_cast<unsigned char>(UnderLumen::Tissue));
+    AssignAdvised(layer, static_cast<std::size_t>(count), static_cast<unsigned char>(UnderLumen::Tissue));
     DrawAorticWall(*anatomy.wall, p, grid, reach, contrast, labels, layer);
     for (const Tube& tube : anatomy.wallTubes)
     {
@@ -288,6 +291,7 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
         direction(r, c) = grid.direction(r, c);
     image->SetDirection(direction);
     image->Allocate();
+    AdviseHugePagesOfImage(*image);
     return image;
   };
   phantom.ct = makeImage(CtImage::New());

@@ -13,6 +13,7 @@
 #include "Common/DistanceInsideMask.h"
 #include "Common/Errors.h"
 #include "Common/Format.h"
+#include "Common/HugePages.h"
 #include "Common/ImageGeometry.h"
 #include "Common/IndexBox.h"
 #include "Common/MaskGrid.h"
@@ -133,6 +134,7 @@ LabelImage::Pointer PasteOnGrid(const CtImage& ct, const MaskGrid& lumen, const 
   mask->CopyInformation(&ct);
   mask->SetRegions(ct.GetLargestPossibleRegion());
   mask->Allocate(false);
+  AdviseHugePagesOfImage(*mask);
   // The grid's pages are first touched here, slice by slice on both cores: zeroed, then the box's
   // voxels pasted.
   const itk::Size<3> size = ct.GetLargestPossibleRegion().GetSize();

@@ -10,6 +10,7 @@
 
 #include "Common/Errors.h"
 #include "Common/Format.h"
+#include "Common/HugePages.h"
 #include "Common/ImageGeometry.h"
 #include "Common/IndexBox.h"
 #include "Common/MaskGrid.h"
@@ -67,7 +68,9 @@ LabelImage::Pointer OntoCtGrid(const LabelImage::Pointer& given, const IndexBox&
   auto out = LabelImage::New();
   out->CopyInformation(&ct);
   out->SetRegions(ct.GetLargestPossibleRegion());
-  out->Allocate(true);
+  out->Allocate(false);
+  AdviseHugePagesOfImage(*out);
+  out->FillBuffer(0);
   const Eigen::Matrix3d ctFromLps = grid.M.inverse();
   // The CT index box spanned by the foreground box's corners (half a voxel beyond its centres).
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "Common/HugePages.h"
 #include "Common/IndexBox.h"
 #include "Common/MaskGrid.h"
 #include "Common/Types.h"
@@ -32,8 +33,8 @@ class VoxelBits
 {
 public:
   explicit VoxelBits(long count)
-    : m_Words(static_cast<std::size_t>((count + 63) / 64), 0)
   {
+    AssignAdvised(m_Words, static_cast<std::size_t>((count + 63) / 64), std::uint64_t(0));
   }
   bool Test(long flat) const { return (m_Words[flat >> 6] >> (flat & 63)) & 1u; }
   void Set(long flat) { m_Words[flat >> 6] |= std::uint64_t(1) << (flat & 63); }

@@ -13,6 +13,7 @@
 #include "Common/DistanceInsideMask.h"
 #include "Common/Errors.h"
 #include "Common/Format.h"
+#include "Common/HugePages.h"
 #include "Common/ImageGeometry.h"
 #include "Common/IndexBox.h"
 #include "Common/MaskGrid.h"
@@ -101,7 +102,7 @@ CroppedRegion CropToRegion(const CtImage& ct, const VoxelBits& inRegion, const I
   CroppedRegion crop;
   crop.box = box;
   crop.region = MaskGrid(crop.box.size);
-  crop.hu.resize(static_cast<std::size_t>(crop.region.Count()));
+  AssignAdvised(crop.hu, static_cast<std::size_t>(crop.region.Count()), short(0));
   OnTwoCores(crop.box.size[2],
              [&](long first, long end)
              {

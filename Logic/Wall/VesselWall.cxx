@@ -9,6 +9,7 @@
 
 #include "Centerlines/VesselOrigins.h"
 #include "Common/CheckRange.h"
+#include "Common/HugePages.h"
 #include "Common/IndexBox.h"
 #include "Common/Median.h"
 
@@ -124,6 +125,7 @@ CtImage::Pointer CropAroundLumen(const CtImage& ct, const LabelImage& lumen, dou
   crop->SetDirection(ct.GetDirection());
   crop->SetRegions(cropSize);
   crop->Allocate();
+  AdviseHugePagesOfImage(*crop);
   const itk::Size<3> full = ct.GetLargestPossibleRegion().GetSize();
   const short* in = ct.GetBufferPointer();
   short* out = crop->GetBufferPointer();
@@ -140,6 +142,7 @@ LabelImage::Pointer WallLabelMap(const VesselWall& wall, const LabelImage& lumen
   labels->CopyInformation(&lumen);
   labels->SetRegions(lumen.GetLargestPossibleRegion());
   labels->Allocate();
+  AdviseHugePagesOfImage(*labels);
   const itk::Size<3> size = lumen.GetLargestPossibleRegion().GetSize();
   const std::size_t count = size[0] * size[1] * size[2];
   const unsigned char* m = lumen.GetBufferPointer();
