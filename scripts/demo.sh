@@ -8,8 +8,10 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-sgp_install
-sgp_build -- StentGraftSimulation SyntheticAorticPhantom
+# Only what the demo uses: the tests' packages (GoogleTest, Chromium, Snakemake, Slurm, …) and the
+# test and benchmark programs come with scripts/test.sh.
+sgp_install demo
+SGP_CCACHE=${SGP_CCACHE:-0} sgp_build -DBUILD_TESTING=OFF -DSGP_BUILD_BENCHMARKS=OFF -- StentGraftSimulation SyntheticAorticPhantom
 
 demo="$SGP_BUILD/demo"
 mkdir -p "$demo"
