@@ -26,6 +26,9 @@ SegmentLumen stage (which takes the given lumen: not repeated) against the regio
 Then the memory row (issue 11): a 512 x 512 x 1000 phantom (0.7 x 0.7 x 0.5 mm slices, as
 whole-aorta CTAs are taken), the whole job once, its peak resident memory against 2 x the
 decompressed input (512 * 512 * 1000 * 2 bytes of HU).
+And the same on real anatomy (issue 48 item 3): the AVT case D1's manual vessel-tree mask
+(../shared/data/avt, or --shared), its 3 mm slices made four times thinner (1,004 slices of 0.75 mm,
+the mask interpolated linearly and kept at >= 0.5) and painted as the AVT tests paint it.
 
 With --check, exits 1 when any row misses its target (the CTest label `benchmark` runs it; not
 part of scripts/test.sh's default run, since timings are noisy). Timings are asserted nowhere
@@ -130,6 +133,76 @@ def memory_rows(build, work):
              multiple <= TARGET_INPUT_MULTIPLE)]
 
 
+PAINT_AVT = r"""
+import gzip, json, re, sys, zlib
+import numpy
+mask_path, seeds_path, case, out_path = sys.argv[1:5]
+raw = open(mask_path, "rb").read()
+head, body = raw.split(b"\n\n", 1)
+header = head.decode()
+size = [int(v) for v in re.search(r"^sizes: (.*)$", header, re.M).group(1).split()]
+directions = [[float(c) for c in v.split(",")] for v in re.findall(r"\(([^)]*)\)", re.search(
+    r"^space directions: (.*)$", header, re.M).group(1))]
+origin = [float(c) for c in re.search(r"^space origin: \((.*)\)$", header, re.M).group(1).split(",")]
+mask = numpy.frombuffer(zlib.decompress(body, 31), dtype=numpy.uint8).reshape(size[2], size[1], size[0]) > 0
+# Slices four times thinner: the mask interpolated linearly between its slices, kept where >= 0.5.
+factor = 4
+k = (numpy.arange(size[2] * factor) + 0.5) / factor - 0.5
+k0 = numpy.clip(numpy.floor(k).astype(int), 0, size[2] - 1)
+k1 = numpy.clip(k0 + 1, 0, size[2] - 1)
+t = numpy.clip(k - k0, 0.0, 1.0).astype(numpy.float32)
+fine = numpy.empty((len(k), size[1], size[0]), dtype=bool)
+for n in range(len(k)):
+    fine[n] = (1.0 - t[n]) * mask[k0[n]] + t[n] * mask[k1[n]] >= 0.5
+del mask
+slices = fine.shape[0]
+# Painted as the AVT tests paint (Testing/Anatomy/AvtSupport.h): lumen 400 HU at the top of the
+# scan falling to 300 HU at its bottom, tissue 40 HU, noise sigma 15 HU.
+zs = origin[2] + directions[2][2] / factor * (numpy.arange(slices) - (factor - 1) / 2.0)
+lumen = 300.0 + 100.0 * (zs - zs.min()) / (zs.max() - zs.min())
+rng = numpy.random.default_rng(5)
+ct = numpy.empty(fine.shape, dtype="<i2")
+for n in range(slices):
+    ct[n] = numpy.rint(numpy.where(fine[n], lumen[n], 40.0) +
+                       rng.standard_normal(fine[n].shape, dtype=numpy.float32) * 15.0)
+del fine
+step = [directions[0], directions[1], [c / factor for c in directions[2]]]
+first = [origin[a] - (factor - 1) / 2.0 * step[2][a] for a in range(3)]
+out = ("NRRD0004\ntype: short\ndimension: 3\nspace: left-posterior-superior\nsizes: %d %d %d\n"
+       "space directions: %s\nkinds: domain domain domain\nendian: little\nencoding: gzip\n"
+       "space origin: (%r,%r,%r)\n\n" % (size[0], size[1], slices,
+       " ".join("(%r,%r,%r)" % tuple(v) for v in step), *first))
+with open(out_path, "wb") as f:
+    f.write(out.encode())
+    f.write(gzip.compress(ct.tobytes(), compresslevel=1))
+seed = json.load(open(seeds_path))[case]["seed_ijk"]
+ijk = [seed[0], seed[1], seed[2] * factor + (factor - 1) / 2.0]
+lps = [first[a] + sum(step[b][a] * ijk[b] for b in range(3)) for a in range(3)]
+print("%d %r,%r,%r" % (slices, -lps[0], -lps[1], lps[2]))
+"""
+REAL_CASE = "D1"  # the AVT case painted at 0.75 mm: 512 x 666 x 1004
+
+
+def real_anatomy_memory_row(build, work, shared):
+    """The peak-memory row on a real vessel tree (AVT D1's mask, its 3 mm slices made four times
+    thinner, painted as the AVT tests paint) against 2 x its decompressed size."""
+    os.makedirs(work, exist_ok=True)
+    avt = os.path.join(shared, "data", "avt")
+    volume = os.path.join(work, "avt-%s-fine.nrrd" % REAL_CASE)
+    painted = subprocess.run([sys.executable, "-c", PAINT_AVT, os.path.join(avt, "avt_dongyang_%s.seg.nrrd" % REAL_CASE),
+                              os.path.join(avt, "seeds.json"), REAL_CASE, volume],
+                             check=True, capture_output=True, text=True).stdout.split()
+    slices, seed = int(painted[0]), painted[1]
+    input_mib = 512 * 666 * slices * 2 / 1048576.0
+    _, job_mib, _, err, _ = best_of(whole_job_argv(build, work, volume, seed), 1, "StentGraftSimulation")
+    os.remove(volume)
+    multiple = job_mib / input_mib
+    return [("Peak memory of the whole job on AVT %s's real vessel tree painted at 512 x 666 x %d (0.71 x 0.71 x "
+             "0.75 mm), input %.0f MiB decompressed" % (REAL_CASE, slices, input_mib),
+             "%.0f MiB = %.2f x the input" % (job_mib, multiple), "<= %g x" % TARGET_INPUT_MULTIPLE,
+             multiple <= TARGET_INPUT_MULTIPLE)]
+
+
 def whole_job_rows(build, work, repeat=3):
     """[(measurement, result, target, met)] for the table in docs/development.md."""
     os.makedirs(work, exist_ok=True)
@@ -207,12 +280,15 @@ def main():
     parser.add_argument("build")
     parser.add_argument("--workdir", default=None)
     parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--shared", default=None, help="the shared folder with data/avt (default: ../shared)")
     parser.add_argument("--check", action="store_true", help="exit 1 when a row misses its target")
     args = parser.parse_args()
     work = args.workdir or tempfile.mkdtemp(prefix="sgp-whole-job-")
     os.makedirs(work, exist_ok=True)
     build = os.path.abspath(args.build)
-    rows = whole_job_rows(build, work, args.repeat) + memory_rows(build, os.path.join(work, "memory"))
+    shared = args.shared or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "shared")
+    rows = (whole_job_rows(build, work, args.repeat) + memory_rows(build, os.path.join(work, "memory")) +
+            real_anatomy_memory_row(build, os.path.join(work, "memory-avt"), shared))
     print("Machine: %s, %d cores, %s" % (cpu_name(), os.cpu_count(), platform.platform()))
     print()
     print("| measurement | result | target | met |")
