@@ -183,10 +183,12 @@ print("%d %r,%r,%r" % (slices, -lps[0], -lps[1], lps[2]))
 REAL_CASE = "D1"  # the AVT case painted at 0.75 mm: 512 x 666 x 1004
 
 
-def real_anatomy_memory_row(build, work, shared):
+def real_anatomy_memory_row(build, work, shared=None):
     """The peak-memory row on a real vessel tree (AVT D1's mask, its 3 mm slices made four times
-    thinner, painted as the AVT tests paint) against 2 x its decompressed size."""
+    thinner, painted as the AVT tests paint) against 2 x its decompressed size. `shared`: the
+    folder holding data/avt (default: ../shared beside the clone)."""
     os.makedirs(work, exist_ok=True)
+    shared = shared or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "shared")
     avt = os.path.join(shared, "data", "avt")
     volume = os.path.join(work, "avt-%s-fine.nrrd" % REAL_CASE)
     painted = subprocess.run([sys.executable, "-c", PAINT_AVT, os.path.join(avt, "avt_dongyang_%s.seg.nrrd" % REAL_CASE),
@@ -194,7 +196,7 @@ def real_anatomy_memory_row(build, work, shared):
                              check=True, capture_output=True, text=True).stdout.split()
     slices, seed = int(painted[0]), painted[1]
     input_mib = 512 * 666 * slices * 2 / 1048576.0
-    _, job_mib, _, err, _ = best_of(whole_job_argv(build, work, volume, seed), 1, "StentGraftSimulation")
+    job_mib = best_of(whole_job_argv(build, work, volume, seed), 1, "StentGraftSimulation")[1]
     os.remove(volume)
     multiple = job_mib / input_mib
     return [("Peak memory of the whole job on AVT %s's real vessel tree painted at 512 x 666 x %d (0.71 x 0.71 x "
@@ -286,9 +288,8 @@ def main():
     work = args.workdir or tempfile.mkdtemp(prefix="sgp-whole-job-")
     os.makedirs(work, exist_ok=True)
     build = os.path.abspath(args.build)
-    shared = args.shared or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "shared")
     rows = (whole_job_rows(build, work, args.repeat) + memory_rows(build, os.path.join(work, "memory")) +
-            real_anatomy_memory_row(build, os.path.join(work, "memory-avt"), shared))
+            real_anatomy_memory_row(build, os.path.join(work, "memory-avt"), args.shared))
     print("Machine: %s, %d cores, %s" % (cpu_name(), os.cpu_count(), platform.platform()))
     print()
     print("| measurement | result | target | met |")

@@ -100,10 +100,9 @@ def main():
                  "%.2f s vs %.2f s" % (ours, theirs), "faster than the peer", ours < theirs,
                  "agreement %s voxels (symmetric mean distance)" % row[5].strip()))
 
-    shared = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "shared")
     for what, value, target, met in (whole_job_rows(build, os.path.join(work, "whole-job")) +
                                       memory_rows(build, os.path.join(work, "memory")) +
-                                      real_anatomy_memory_row(build, os.path.join(work, "memory-avt"), shared)):
+                                      real_anatomy_memory_row(build, os.path.join(work, "memory-avt"))):
         rows.append((what, value, target, met, ""))
 
     print("Machine: %s, %d cores, %s" % (cpu_name(), os.cpu_count(), platform.platform()))

@@ -282,9 +282,7 @@ LabelImage::Pointer SkeletonToImage(const Skeleton& skeleton, const LabelImage& 
   auto image = LabelImage::New();
   image->CopyInformation(&reference);
   image->SetRegions(reference.GetLargestPossibleRegion());
-  image->Allocate(false);
-  AdviseHugePagesOfImage(*image);
-  image->FillBuffer(0);
+  AllocateAdvised(*image, true);
   for (const auto& index : skeleton.voxels)
     image->SetPixel(index, 1);
   return image;

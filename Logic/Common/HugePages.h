@@ -36,12 +36,15 @@ void AssignAdvised(std::vector<T, Allocator>& v, std::size_t n, const T& value)
   v.assign(n, value);
 }
 
-/// AdviseHugePages on an ITK image's buffer: call it after Allocate(false) (or Allocate()) and
-/// before the buffer is first written (FillBuffer included).
+/// Allocates an ITK image's buffer (its regions set) and advises it (AdviseHugePages) before
+/// anything is written; with `zeroed`, then fills it with 0 (what Allocate(true) gives).
 template<typename Image>
-void AdviseHugePagesOfImage(Image& image)
+void AllocateAdvised(Image& image, bool zeroed = false)
 {
+  image.Allocate(false);
   AdviseHugePages(image.GetBufferPointer(), image.GetPixelContainer()->Size() * sizeof(typename Image::PixelType));
+  if (zeroed)
+    image.FillBuffer(typename Image::PixelType{});
 }
 
 } // namespace sgp

@@ -139,8 +139,7 @@ typename Image::Pointer ReadVolumeFile(const std::string& path)
       auto image = CtImage::New();
       image->CopyInformation(reader->GetOutput());
       image->SetRegions(reader->GetOutput()->GetLargestPossibleRegion());
-      image->Allocate(false);
-      AdviseHugePagesOfImage(*image);
+      AllocateAdvised(*image);
       if (InflateGzipNrrdInto(path, *image))
         return image;
     }

@@ -95,8 +95,7 @@ LabelImage::Pointer MaskLike(Image& image)
   auto mask = LabelImage::New();
   mask->CopyInformation(&image);
   mask->SetRegions(image.GetLargestPossibleRegion());
-  mask->Allocate();
-  AdviseHugePagesOfImage(*mask);
+  AllocateAdvised(*mask);
   return mask;
 }
 

@@ -290,8 +290,7 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
       for (int c = 0; c < 3; ++c)
         direction(r, c) = grid.direction(r, c);
     image->SetDirection(direction);
-    image->Allocate();
-    AdviseHugePagesOfImage(*image);
+    AllocateAdvised(*image);
     return image;
   };
   phantom.ct = makeImage(CtImage::New());

@@ -133,8 +133,7 @@ LabelImage::Pointer PasteOnGrid(const CtImage& ct, const MaskGrid& lumen, const 
   LabelImage::Pointer mask = LabelImage::New();
   mask->CopyInformation(&ct);
   mask->SetRegions(ct.GetLargestPossibleRegion());
-  mask->Allocate(false);
-  AdviseHugePagesOfImage(*mask);
+  AllocateAdvised(*mask);
   // The grid's pages are first touched here, slice by slice on both cores: zeroed, then the box's
   // voxels pasted.
   const itk::Size<3> size = ct.GetLargestPossibleRegion().GetSize();

@@ -68,9 +68,7 @@ LabelImage::Pointer OntoCtGrid(const LabelImage::Pointer& given, const IndexBox&
   auto out = LabelImage::New();
   out->CopyInformation(&ct);
   out->SetRegions(ct.GetLargestPossibleRegion());
-  out->Allocate(false);
-  AdviseHugePagesOfImage(*out);
-  out->FillBuffer(0);
+  AllocateAdvised(*out, true);
   const Eigen::Matrix3d ctFromLps = grid.M.inverse();
   // The CT index box spanned by the foreground box's corners (half a voxel beyond its centres).
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;

@@ -124,8 +124,7 @@ CtImage::Pointer CropAroundLumen(const CtImage& ct, const LabelImage& lumen, dou
   crop->SetSpacing(ct.GetSpacing());
   crop->SetDirection(ct.GetDirection());
   crop->SetRegions(cropSize);
-  crop->Allocate();
-  AdviseHugePagesOfImage(*crop);
+  AllocateAdvised(*crop);
   const itk::Size<3> full = ct.GetLargestPossibleRegion().GetSize();
   const short* in = ct.GetBufferPointer();
   short* out = crop->GetBufferPointer();
@@ -141,8 +140,7 @@ LabelImage::Pointer WallLabelMap(const VesselWall& wall, const LabelImage& lumen
   LabelImage::Pointer labels = LabelImage::New();
   labels->CopyInformation(&lumen);
   labels->SetRegions(lumen.GetLargestPossibleRegion());
-  labels->Allocate();
-  AdviseHugePagesOfImage(*labels);
+  AllocateAdvised(*labels);
   const itk::Size<3> size = lumen.GetLargestPossibleRegion().GetSize();
   const std::size_t count = size[0] * size[1] * size[2];
   const unsigned char* m = lumen.GetBufferPointer();
