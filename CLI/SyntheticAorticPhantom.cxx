@@ -49,6 +49,7 @@ int main(int argc, char* argv[])
     p.neckThrombusThicknessMm = neckThrombusThicknessMm;
     p.neckThrombusLengthMm = neckThrombusLengthMm;
     p.neckThrombusSide = ParsePhantomSide(neckThrombusSide, "neckThrombusSide");
+    p.neckLumenPerLevel = neckLumenPerLevel;
     p.calcificationHu = calcificationHu;
     p.sacCalcificationArcDeg = sacCalcificationArcDeg;
     p.sacCalcificationSide = ParsePhantomSide(sacCalcificationSide, "sacCalcificationSide");
@@ -63,6 +64,15 @@ int main(int argc, char* argv[])
     p.includeLeftRenalVein = includeLeftRenalVein;
     p.leftRenalVeinHu = leftRenalVeinHu;
     p.bolusGradientHuPerCm = bolusGradientHuPerCm;
+    p.renalRadiusMm = 0.5 * renalDiameterMm;
+    p.ivcArcDeg = ivcArcDeg;
+    p.sacAxisRatio = sacAxisRatio;
+    p.sacMajorAxis = ParsePhantomSide(sacMajorAxis, "sacMajorAxis");
+    p.rightCommonIliacAngleDeg = rightCommonIliacAngleDeg;
+    p.leftCommonIliacAngleDeg = leftCommonIliacAngleDeg;
+    p.distalNeckLengthMm = distalNeckLengthMm;
+    p.rightInternalIliac = !omitRightInternalIliac;
+    p.leftInternalIliac = !omitLeftInternalIliac;
     ValidatePhantomParams(p);
 
     SlicerProgress progress(std::cout, { { "GeneratePhantom", 8.0 }, { "WriteOutputs", 2.0 } });

@@ -24,10 +24,18 @@ sorts the outcome into one class:
   lies on a bend where no plane is the vessel's cross-section (the plan's warning says so);
 - `off:<value>`: a plan with that value out of tolerance (right and left are compared with the
   truth's right and left, so a swapped side shows here);
+- `unsafe:seal`: the fit check passed where the truth's healthy neck is under 10 mm (a graft that
+  would leak; a failure of the sweep whatever the share of plans);
 - `error:<first words>`: a clean failure: non-zero exit, exactly one stderr line `ERROR: ...`,
   no output file left;
 - `bad-error`, `crash`, `hang`: anything else (a signal, several stderr lines, a partial output,
   more than the time limit).
+
+Issue 46's ranges (`--ranges issue46`) widen issue 32's to the classes independent phantoms found
+unsafe: renal ostia of 5-8 mm, 0.8 mm slices, neck thrombus starting 6-14 mm below the site,
+neighbours against the sac (IVC over 72-120 deg, psoas, duodenum), elliptical sacs, asymmetric
+bifurcations (unequal iliac angles, no distal neck) and an internal iliac out of view; there a value
+the plan names in notMeasured is left out, not counted as an error (`plan, values not measured`).
 
 Prints one line per draw (class, then the flags that rebuild it) and a table of the classes;
 exits 1 when a draw is bad-error/crash/hang or the share of `plan` is below --require.
@@ -150,6 +158,51 @@ def draw(rng):
     return flags
 
 
+def draw_issue46(rng):
+    """One anatomy and scan over issue 32's ranges widened to issue 46's classes, as
+    SyntheticAorticPhantom flags: renal ostia of 5-8 mm; 0.8 mm slices among the others; in a
+    third of the walled draws a neck thrombus crescent of 3-8 mm starting 6-14 mm below the site;
+    with a wall in fat the IVC (touching 72-120 deg of the circumference), both psoas or the
+    duodenum against the vessel; an elliptical sac (ratio 1.05-1.3) in a third of the draws with sac
+    thrombus; in half the draws common iliacs leaving at unequal angles (12-45 deg from the midline),
+    in a quarter a bifurcation at the sac's floor (no distal neck); one internal iliac out of view
+    in one draw in seven."""
+    flags = draw(rng)
+    flags["--renalDiameterMm"] = "%.1f" % rng.uniform(5, 8)
+    pixel = flags["--spacingMm"].split(",")[0]
+    flags["--spacingMm"] = "%s,%s,%s" % (pixel, pixel, rng.choice(["0.625", "0.8", "1", "1.25", "2", "2.5", "3"]))
+    neck, neck_length = float(flags["--neckDiameterMm"]), float(flags["--neckLengthMm"])
+    walled = "--wallThicknessMm" in flags
+    in_fat = walled and "--tissueHu" in flags
+    if walled and rng.random() < 1.0 / 3.0 and neck_length >= 9.0:
+        onset = rng.uniform(6, min(14, neck_length - 3))
+        # The phantom keeps at least a quarter of the neck's inner radius as lumen.
+        inner = neck / 2 - float(flags["--wallThicknessMm"])
+        flags["--neckThrombusThicknessMm"] = "%.1f" % rng.uniform(3, min(8, 0.7 * inner))
+        flags["--neckThrombusLengthMm"] = "%.1f" % (neck_length - onset)
+        flags["--neckThrombusSide"] = rng.choice(["anterior", "left", "posterior", "right"])
+        flags["--neckLumenPerLevel"] = None  # the truth's discs (drawn as a tube: onset 2.6 mm low)
+    if in_fat:
+        if rng.random() < 0.4:
+            flags["--includeIvc"] = None
+            flags["--ivcArcDeg"] = "%.0f" % rng.uniform(72, 120)
+        if rng.random() < 0.35:
+            flags["--includePsoas"] = None
+        if rng.random() < 0.15:
+            flags["--includeDuodenum"] = None
+    if "--thrombusMaxThicknessMm" in flags and rng.random() < 1.0 / 3.0:
+        flags["--sacAxisRatio"] = "%.2f" % rng.uniform(1.05, 1.3)
+        flags["--sacMajorAxis"] = rng.choice(["anterior", "left", "posterior", "right"])
+    if rng.random() < 0.5:
+        flags["--rightCommonIliacAngleDeg"] = "%.0f" % rng.uniform(12, 45)
+        flags["--leftCommonIliacAngleDeg"] = "%.0f" % rng.uniform(12, 45)
+    if rng.random() < 0.25:
+        flags["--distalNeckLengthMm"] = "0"
+    if rng.random() < 1.0 / 7.0:
+        flags[rng.choice(["--omitRightInternalIliac", "--omitLeftInternalIliac"])] = None
+    return flags
+
+
 def draw_issue13(rng):
     """One anatomy and scan over issue 13's ranges (no wall), as SyntheticAorticPhantom flags."""
     neck, direction, pixel = neck_and_scan_geometry(rng)
@@ -211,11 +264,13 @@ def shoulder_allowance(truth, level_name, below_mm, outer=False):
     return float(np.max(np.abs(2.0 * radii[near] - diameter_here)))
 
 
-def judge(truth, values, slice_mm, outer, bend_excused=False):
+def judge(truth, values, slice_mm, outer, bend_excused=False, not_measured_excused=False):
     """The first diameter out of tolerance, or None: the lumen's (a)-(f), and the outer wall's
     where the phantom has a wall in fat (`outer`). With `bend_excused` (the plan said "(b) is not
     measured" because its level lies on a bend, issue 32) (b) may be not measured, but only when
-    the return file names it in notMeasured."""
+    the return file names it in notMeasured; with `not_measured_excused` (issue 46's ranges, as the
+    independent sweep counted) any value the return file names in notMeasured is left out, not an
+    error — one it leaves out without naming it still is."""
     thin = slice_mm <= 1.25 + 1e-9
     checks = [(name, truth_name, 1.0 if thin else 1.5) for name, truth_name in LUMEN_VALUES.items()]
     if outer:
@@ -228,15 +283,16 @@ def judge(truth, values, slice_mm, outer, bend_excused=False):
             tolerance += shoulder_allowance(truth, "proximalImplantationSite", 15.0, wall)
         measured = float(values.get(name, "-1"))
         expected = float(truth["sizing"][truth_name])
-        if bend_excused and name in ("neckLumenDiameter15mm", "neckDiameter15mm") and \
-                name in values.get("notMeasured", "").split(","):
+        named = name in values.get("notMeasured", "").split(",")
+        if named and (not_measured_excused or (bend_excused and name in ("neckLumenDiameter15mm",
+                                                                          "neckDiameter15mm"))):
             continue
         if measured < 0 or abs(measured - expected) > tolerance:
             return "%s %.1f vs %.1f (tolerance %.1f)" % (name, measured, expected, tolerance)
     return None
 
 
-def one_draw(phantom, cli, workdir, index, flags):
+def one_draw(phantom, cli, workdir, index, flags, ranges):
     folder = os.path.join(workdir, "draw-%03d" % index)
     if os.path.exists(folder):
         shutil.rmtree(folder)
@@ -266,9 +322,21 @@ def one_draw(phantom, cli, workdir, index, flags):
         return "bad-error", result.stderr.strip()[:300]
     outer = "--wallThicknessMm" in flags and float(flags.get("--tissueHu", "40")) < -50
     bend = "(b) is not measured: " in result.stderr
-    off = judge(truth, read_params(retfile), float(flags["--spacingMm"].split(",")[2]), outer, bend)
+    values = read_params(retfile)
+    # Issue 46: a fit check that passes where the truth's healthy seal (the site down to thrombus
+    # over 10 % of the circumference or a 10 % wider outer wall) is under the 10 mm minimum would
+    # leak: a wrong answer on the unsafe side, whatever the diameters read.
+    healthy = truth["sizing"].get("healthyNeckLength")
+    if values.get("fitCheckPassed") == "true" and healthy is not None and healthy < 10.0:
+        return "unsafe:seal", "the fit check passed on a healthy neck of %.1f mm" % healthy
+    excuse = ranges == "issue46"
+    off = judge(truth, values, float(flags["--spacingMm"].split(",")[2]), outer, bend, excuse)
     if off:
         return "off:" + off.split()[0], off
+    judged = set(LUMEN_VALUES) | (set(OUTER_VALUES) if outer else set())
+    left_out = sorted(judged & set(values.get("notMeasured", "").split(",")))
+    if excuse and left_out:
+        return "plan, values not measured", "not measured: " + ", ".join(left_out)
     return ("plan, (b) not measured", "") if bend else ("plan", "")
 
 
@@ -281,9 +349,10 @@ def main():
     parser.add_argument("--seed", type=int, default=13)
     parser.add_argument("--require", type=float, default=0.0, help="least share of plans within tolerance")
     parser.add_argument("--keep", action="store_true", help="keep each draw's folder")
-    parser.add_argument("--ranges", choices=("issue32", "issue13"), default="issue32",
-                        help="issue 32's ranges (walls, thrombus, unequal iliacs, short angled necks; the default) "
-                             "or issue 13's (no wall)")
+    parser.add_argument("--ranges", choices=("issue32", "issue13", "issue46"), default="issue32",
+                        help="issue 32's ranges (walls, thrombus, unequal iliacs, short angled necks; the default), "
+                             "issue 13's (no wall) or issue 46's (issue 32's widened: neck thrombus, neighbours, "
+                             "elliptical sacs, asymmetric bifurcations, renal ostia, an internal iliac out of view)")
     args = parser.parse_args()
     workdir = os.path.abspath(args.workdir)
     os.makedirs(workdir, exist_ok=True)
@@ -291,16 +360,17 @@ def main():
     classes = collections.Counter()
     bad = 0
     for index in range(args.draws):
-        flags = draw(rng) if args.ranges == "issue32" else draw_issue13(rng)
-        outcome, detail = one_draw(os.path.abspath(args.phantom), os.path.abspath(args.cli), workdir, index, flags)
+        flags = {"issue32": draw, "issue13": draw_issue13, "issue46": draw_issue46}[args.ranges](rng)
+        outcome, detail = one_draw(os.path.abspath(args.phantom), os.path.abspath(args.cli), workdir, index, flags,
+                                   args.ranges)
         classes[outcome] += 1
-        bad += outcome in ("bad-error", "crash", "hang", "phantom-failed")
+        bad += outcome in ("bad-error", "crash", "hang", "phantom-failed") or outcome.startswith("unsafe:")
         print("%3d %-40s %s" % (index, outcome, " ".join(flag_list(flags))), flush=True)
         if detail:
             print("      " + detail, flush=True)
         if not args.keep:
             shutil.rmtree(os.path.join(workdir, "draw-%03d" % index), ignore_errors=True)
-    plans = classes["plan"] + classes["plan, (b) not measured"]
+    plans = classes["plan"] + classes["plan, (b) not measured"] + classes["plan, values not measured"]
     print("\n%d draws (seed %d): %d plans within tolerance (%.0f %%)" % (
         args.draws, args.seed, plans, 100.0 * plans / max(1, args.draws)))
     for outcome, count in classes.most_common():

@@ -80,6 +80,30 @@ double FoundInternalIliacOriginAbscissa(const CenterlineTree& tree, int side)
   return ProjectOntoCenterline(iliac, origin);
 }
 
+double IliacNarrowingAbscissa(const Centerline& iliac)
+{
+  const Eigen::Index n = iliac.Size();
+  const auto medianOver = [&](double from, double to)
+  {
+    std::vector<double> radii;
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (iliac.abscissaMm[i] >= from - 1e-9 && iliac.abscissaMm[i] <= to + 1e-9)
+        radii.push_back(iliac.radiusMm[i]);
+    if (radii.empty())
+      return std::numeric_limits<double>::quiet_NaN();
+    std::nth_element(radii.begin(), radii.begin() + std::ptrdiff_t(radii.size() / 2), radii.end());
+    return radii[radii.size() / 2];
+  };
+  const double length = iliac.LengthMm();
+  for (double s = IliacNarrowingSearchFromMm; s + 5.0 <= length + 1e-9; s += 0.5)
+  {
+    const double above = medianOver(s - 15.0, s - 5.0), here = medianOver(s, s + 5.0);
+    if (std::isfinite(above) && std::isfinite(here) && here < IliacNarrowingRatio * above)
+      return s;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 double InternalIliacOriginAbscissa(const CenterlineTree& tree, int side)
 {
   if (std::isfinite(tree.givenInternalIliacAbscissaMm[std::size_t(side)]))

@@ -53,6 +53,19 @@ double InternalIliacOriginAbscissa(const CenterlineTree& tree, int side);
 /// origin does not move B).
 double FoundInternalIliacOriginAbscissa(const CenterlineTree& tree, int side);
 
+/// Where a common iliac with no internal iliac junction in view narrows into its external iliac
+/// (issue 46 item 9: an internal iliac cut off, occluded or lost to the blur): the first abscissa s
+/// ≥ `IliacNarrowingSearchFromMm` along `iliac` at which the median inscribed radius over [s, s + 5]
+/// is under `IliacNarrowingRatio` of the median over [s − 15, s − 5] (the common iliac just above),
+/// mm; NaN when it never narrows so, or the centerline is shorter than 35 mm. The external iliac
+/// is about three quarters of the common iliac across (0.6–0.7 of its lumen with a wall); a
+/// common iliac tapers by a few per cent over 15 mm. The search starts 30 mm down, its first
+/// reference 15 mm down: past the shared lumen above the flow divider (10–14 mm below B on our
+/// anatomies), where the inscribed spheres are the aorta's.
+double IliacNarrowingAbscissa(const Centerline& iliac);
+constexpr double IliacNarrowingSearchFromMm = 30.0;
+constexpr double IliacNarrowingRatio = 0.8;
+
 struct AorticBifurcation
 {
   Point3 lps = Point3::Zero(); ///< B, LPS mm

@@ -391,10 +391,17 @@ void MarkLandingZonesReadAtTheDefault(const MeasureContext& c, Measurements& out
       continue;
     const std::string s = Side(side);
     const double end = leg.rings.back().abscissaMm;
-    const std::string level = "the leg's default landing zone, " + FormatNumber(end - landingZoneMm) + " to " +
-                              FormatNumber(end) + " mm down the " + s + " iliac's centerline (a " +
-                              FormatNumber(DefaultLegLengthMm, 0) + " mm leg), as no " + s +
-                              " internal iliac origin was found";
+    // The leg ends 5 mm above where the common iliac narrows into its external iliac where it
+    // does (StentMesh.cxx), else at its default length.
+    const double narrowing = IliacNarrowingAbscissa(*c.iliac[side]);
+    const std::string zone =
+      FormatNumber(end - landingZoneMm) + " to " + FormatNumber(end) + " mm down the " + s + " iliac's centerline";
+    const std::string level =
+      std::isfinite(narrowing)
+        ? "a landing zone above where the " + s + " iliac narrows into its external iliac (" + FormatNumber(narrowing) +
+            " mm down it, taken for its division), " + zone + ", as no " + s + " internal iliac origin was found"
+        : "the leg's default landing zone, " + zone + " (a " + FormatNumber(DefaultLegLengthMm, 0) +
+            " mm leg), as no " + s + " internal iliac origin was found";
     std::string marked;
     int count = 0;
     for (Measurement& m : out.values)
@@ -407,7 +414,9 @@ void MarkLandingZonesReadAtTheDefault(const MeasureContext& c, Measurements& out
       }
     if (!marked.empty())
       out.warnings.push_back(marked + (count > 1 ? " are" : " is") + " estimated: read at " + level +
-                             " (not 5 mm above it); the common iliac may end above that level.");
+                             (std::isfinite(narrowing)
+                                ? " (a narrowing that is a stenosis would put it higher than the division)."
+                                : " (not 5 mm above it); the common iliac may end above that level."));
   }
 }
 

@@ -202,7 +202,7 @@ AorticPhantom GenerateAorticPhantom(const PhantomParams& p, const ProgressCallba
     ForEachVoxelNear(grid, lo, hi,
                      [&](long flat, const Point3& x)
                      {
-                       const double sd = distance.SignedDistance(x);
+                       const double sd = LumenSignedDistance(anatomy, t, distance, x);
                        // The bolus's cranio-caudal gradient, from the site's level (0 by default).
                        const double lumenContrast =
                          p.lumenHu + p.bolusGradientHuPerCm * (x.z() - anatomy.siteZ) / 10.0 - p.tissueHu;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "Phantom/AorticPhantom.h"
 
@@ -49,6 +50,7 @@ AorticWall::AorticWall(const PhantomParams& p,
   , m_SacThrombusMm(p.thrombusMaxThicknessMm)
   , m_NeckThrombusMm(p.neckThrombusThicknessMm)
   , m_NeckThrombusLengthMm(p.neckThrombusLengthMm)
+  , m_NeckLumenPerLevel(p.neckLumenPerLevel)
   , m_SacThrombusSideDeg(SideDegrees(p.thrombusSide))
   , m_NeckThrombusSideDeg(SideDegrees(p.neckThrombusSide))
   , m_Concentric(p.thrombusConcentric)
@@ -219,6 +221,22 @@ void AorticWall::SampleLumen(double stepMm, std::vector<Point3>& points, std::ve
     if (h <= 0.0)
       break;
   }
+}
+
+double AorticWall::NeckLumenSignedDistance(const Coordinates& c) const
+{
+  // Beyond the stretch too, by three of the tube's 2 mm samples: its chords and nearest-point
+  // radii reach that far from each taper (bands of "thrombus" 1–3 mm beyond them).
+  const double from = std::max(m_SacTop - 6.0, 0.0), to = std::min(m_SacTop + m_NeckThrombusLengthMm + 6.0, m_TopH);
+  if (!m_NeckLumenPerLevel || !(m_NeckThrombusMm > 0.0) || c.beyondMm > 0.0 || c.h <= from || c.h >= to)
+    return std::numeric_limits<double>::quiet_NaN();
+  const Eigen::Vector2d d = c.q - LumenCentre(c.h);
+  const double r = d.norm();
+  constexpr double dh = 0.05; // central differences along the axis (the tapers are 3 mm long)
+  const Eigen::Vector2d centreSlope = (LumenCentre(c.h + dh) - LumenCentre(c.h - dh)) / (2.0 * dh);
+  const double radiusSlope = (LumenRadius(c.h + dh) - LumenRadius(c.h - dh)) / (2.0 * dh);
+  const double along = (r > 1e-9 ? -d.dot(centreSlope) / r : 0.0) - radiusSlope;
+  return (r - LumenRadius(c.h)) / std::sqrt(1.0 + along * along);
 }
 
 double AorticWall::WallSignedDistance(const Coordinates& c) const

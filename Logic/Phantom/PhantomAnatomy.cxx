@@ -174,7 +174,7 @@ void NeckBendSectionTruth(const Anatomy& anatomy,
   const Eigen::Vector3d neck = -neckDirection, sac(0.0, 0.0, -1.0); // downward along the aorta
   const AorticWall* wall = anatomy.wall.get();
   TubeDistance lumenTube(anatomy.tubes.front());
-  const auto inLumen = [&](const Point3& x) { return lumenTube.SignedDistance(x) < 0.0; };
+  const auto inLumen = [&](const Point3& x) { return LumenSignedDistance(anatomy, 0, lumenTube, x) < 0.0; };
   const Point3 lumenCentre = wall ? wall->LumenCentreLps(h) : onAxis(h);
   sizing.neckDiameter15mm = SmallestSectionMeanDiameterMm(inLumen, lumenCentre, neck, sac);
   if (wall)
@@ -270,6 +270,14 @@ void FlowDividerTruth(Anatomy& anatomy, const std::vector<Point3> (&commonAxes)[
 }
 
 } // namespace
+
+double LumenSignedDistance(const Anatomy& anatomy, std::size_t tube, TubeDistance& distance, const Point3& x)
+{
+  if (tube == 0 && anatomy.wall && anatomy.wall->DrawsNeckLumenPerLevel())
+    if (const double d = anatomy.wall->NeckLumenSignedDistance(anatomy.wall->At(x)); std::isfinite(d))
+      return d;
+  return distance.SignedDistance(x);
+}
 
 Anatomy BuildAnatomy(const PhantomParams& p)
 {

@@ -63,6 +63,14 @@ struct Anatomy
 /// See PhantomAnatomy.cxx.
 Anatomy BuildAnatomy(const PhantomParams& p);
 
+class TubeDistance; // PhantomRaster.h
+
+/// The signed distance (mm, negative inside) at `x` of `anatomy`'s tube `tube` (`distance` its
+/// TubeDistance): for the aorta's lumen (tube 0) drawn level by level in the neck thrombus's
+/// stretch (AorticWall::NeckLumenSignedDistance), every other point and tube the tube's own. What
+/// the raster draws the lumens with, and the truths read off them.
+double LumenSignedDistance(const Anatomy& anatomy, std::size_t tube, TubeDistance& distance, const Point3& x);
+
 /// Samples each tube's axis every 1 mm (and at its end) with the radius there.
 void SampleVessels(const Anatomy& anatomy, PhantomTruth& truth);
 

@@ -153,9 +153,12 @@ StentMesh BuildStentMesh(const CenterlineTree& tree, const StentMeshParams& p)
     double length = p.legLengthMm;
     if (length <= 0.0)
     {
-      // To 5 mm above the internal iliac origin where the axes meet (the one the iliac lengths use).
+      // To 5 mm above the internal iliac origin where the axes meet (the one the iliac lengths use);
+      // with none in view, 5 mm above where the common iliac narrows into the external iliac
+      // (IliacNarrowingAbscissa), else the default length.
       const double origin = InternalIliacOriginAbscissa(tree, side);
-      length = std::isfinite(origin) ? origin - gap - 5.0 : DefaultLegLengthMm;
+      const double narrowing = std::isfinite(origin) ? origin : IliacNarrowingAbscissa(*iliac[side]);
+      length = std::isfinite(narrowing) ? narrowing - gap - 5.0 : DefaultLegLengthMm;
     }
     const double iliacLength = iliac[side]->LengthMm();
     const double end = p.legEndAbscissaMm[std::size_t(side)];

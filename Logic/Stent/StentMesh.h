@@ -67,7 +67,8 @@ struct StentMeshParams
   /// Where the trunk starts, as arc length along the aorta from its top, mm (≥ 0); negative: the
   /// proximal implantation site detected from the renal branches (FindProximalSite), or the top.
   double proximalAbscissaMm = -1.0;
-  double legLengthMm = 0.0; ///< 0 = to the internal iliac origin (DefaultLegLengthMm without one)
+  double legLengthMm =
+    0.0; ///< 0 = to the internal iliac origin (without one: IliacNarrowingAbscissa, else DefaultLegLengthMm)
   /// Where each leg's last ring lies, as arc length along its iliac (right, left), mm; NaN: by
   /// legLengthMm. Given (a graft whose limbs end there: DeployGraft.h), the leg's rings are evenly
   /// spaced, at most ringSpacingMm apart, from 3 × startRadiusMm (or, for a leg shorter than one

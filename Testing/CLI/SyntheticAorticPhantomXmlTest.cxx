@@ -71,6 +71,16 @@ int ExpectParsedDefaultsEqualPhantomParams(int argc, char* argv[])
   EXPECT_EQ(includeLeftRenalVein, d.includeLeftRenalVein);
   EXPECT_EQ(leftRenalVeinHu, d.leftRenalVeinHu);
   EXPECT_EQ(bolusGradientHuPerCm, d.bolusGradientHuPerCm);
+  EXPECT_EQ(neckLumenPerLevel, d.neckLumenPerLevel);
+  EXPECT_EQ(0.5 * renalDiameterMm, d.renalRadiusMm);
+  EXPECT_EQ(ivcArcDeg, d.ivcArcDeg);
+  EXPECT_EQ(sacAxisRatio, d.sacAxisRatio);
+  EXPECT_EQ(ParsePhantomSide(sacMajorAxis, "sacMajorAxis"), d.sacMajorAxis);
+  EXPECT_EQ(rightCommonIliacAngleDeg, d.rightCommonIliacAngleDeg);
+  EXPECT_EQ(leftCommonIliacAngleDeg, d.leftCommonIliacAngleDeg);
+  EXPECT_EQ(distalNeckLengthMm, d.distalNeckLengthMm);
+  EXPECT_EQ(!omitRightInternalIliac, d.rightInternalIliac);
+  EXPECT_EQ(!omitLeftInternalIliac, d.leftInternalIliac);
   return EXIT_SUCCESS;
 }
 

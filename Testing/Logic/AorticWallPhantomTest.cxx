@@ -9,6 +9,7 @@
 #include "Common/Errors.h"
 #include "Common/ImageGeometry.h"
 #include "Phantom/AorticPhantom.h"
+#include "Phantom/AorticWall.h"
 
 namespace sgp
 {
@@ -201,6 +202,54 @@ TEST(AorticWallPhantom, NeckThrombusAndCalcification_ArcsInTheTruth)
   // The lumen at (a) is narrowed by the crescent: 2 rl there (the taper is 3 mm from its ends).
   EXPECT_NEAR(s.proximalNeckDiameter, 2 * rl, 1e-9);
   EXPECT_DOUBLE_EQ(s.outerProximalNeckDiameter, 25.0);
+}
+
+// Issue 46 item 2: the neck's lumen is drawn level by level where its crescent tapers (and 6 mm
+// beyond), so the image's thrombus is the truth's. On the thick side the signed distance's zero
+// lies at Ri − T(h) from the axis at every level — through the 3 mm tapers, where the lumen's
+// centre moves 3 mm sideways and a tube round its centre curve (radius at the nearest curve point)
+// had put the edge up to 2.6 mm off — and it is NaN (the tube's) beyond the stretch.
+TEST(AorticWallPhantom, NeckThrombus_LumenDrawnLevelByLevelThroughItsTapers)
+{
+  PhantomParams p = WallParams();
+  p.neckThrombusThicknessMm = 6.0;
+  p.neckThrombusLengthMm = 15.0;
+  p.neckThrombusSide = PhantomSide::Anterior;
+  p.neckLumenPerLevel = true;
+  const double sacTop = 120.0, ri = 12.5 - 1.5;
+  const AorticWall wall(
+    p, [](double) { return 12.5; }, 20.0, sacTop, 145.0, 225.0, 0.0);
+  const auto frame = wall.Frame(sacTop + 10.0);
+  int levels = 0;
+  for (double h = sacTop - 5.5; h <= sacTop + 15.0 + 5.5; h += 0.25)
+  {
+    SCOPED_TRACE("h " + std::to_string(h - sacTop) + " mm above the sac's top");
+    // The lumen's edge toward the thick side (anterior), by bisection on the signed distance.
+    const auto sd = [&](double rho)
+    { return wall.NeckLumenSignedDistance(wall.At(Point3(wall.AxisPoint(h) + rho * frame[0]))); };
+    ASSERT_TRUE(std::isfinite(sd(0.0)));
+    double in = 0.0, out = 12.5;
+    for (int i = 0; i < 50; ++i)
+      (sd(0.5 * (in + out)) < 0.0 ? in : out) = 0.5 * (in + out);
+    EXPECT_NEAR(0.5 * (in + out), ri - wall.ThrombusThickness(h), 1e-6);
+    ++levels;
+  }
+  EXPECT_GT(levels, 100);
+  // Beyond the stretch's 6 mm the tube draws it, and everywhere without the option.
+  PhantomParams tube = p;
+  tube.neckLumenPerLevel = false;
+  const AorticWall tubeWall(
+    tube, [](double) { return 12.5; }, 20.0, sacTop, 145.0, 225.0, 0.0);
+  EXPECT_TRUE(std::isnan(tubeWall.NeckLumenSignedDistance(tubeWall.At(tubeWall.AxisPoint(sacTop + 15.0 - 1.5)))));
+  EXPECT_TRUE(std::isnan(wall.NeckLumenSignedDistance(wall.At(wall.AxisPoint(sacTop + 15.0 + 6.5)))));
+  EXPECT_TRUE(std::isnan(wall.NeckLumenSignedDistance(wall.At(wall.AxisPoint(sacTop - 6.5)))));
+  // A first-order distance: near the edge it is the in-plane distance over its gradient's norm,
+  // never more than the in-plane distance.
+  const double h = sacTop + 15.0 - 1.5; // the top taper's middle, where the centre moves fastest
+  const double edge = ri - wall.ThrombusThickness(h);
+  const double d = wall.NeckLumenSignedDistance(wall.At(Point3(wall.AxisPoint(h) + (edge + 0.3) * frame[0])));
+  EXPECT_GT(d, 0.0);
+  EXPECT_LE(d, 0.3 + 1e-9);
 }
 
 TEST(AorticWallPhantom, Neighbours_TouchTheWallOverAFifthOfItsCircumferenceWithoutFat)

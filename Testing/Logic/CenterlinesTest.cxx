@@ -1,6 +1,7 @@
 // The labelled Y on the aneurysm phantom, against its analytic axes and radii.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <regex>
 #include <stdexcept>
 
@@ -554,6 +555,51 @@ TEST(SmoothCenterline, JogInAWideSacSmoothedOnTheVesselsScale)
   // Narrow: σ = max(2, 0.2 × 8) = 2 mm, the plain Gaussian's steeper slope (measured 25.9°).
   EXPECT_GT(steepestTiltDeg(8.0, 2.0), 20.0);
   EXPECT_NEAR(steepestTiltDeg(8.0, 2.0), steepestTiltDeg(1.0, 2.0), 1e-9);
+}
+
+} // namespace
+} // namespace sgp
+
+namespace sgp
+{
+namespace
+{
+
+/// A straight iliac centerline, 0.5 mm steps over `lengthMm`, its inscribed radius `radius(s)`.
+Centerline IliacWithRadii(double lengthMm, const std::function<double(double)>& radius)
+{
+  Centerline c;
+  c.name = "rightIliac";
+  const Eigen::Index n = Eigen::Index(lengthMm / 0.5) + 1;
+  c.points.resize(n, 3);
+  c.radiusMm.resize(n);
+  c.abscissaMm.resize(n);
+  for (Eigen::Index i = 0; i < n; ++i)
+  {
+    const double s = 0.5 * double(i);
+    c.points.row(i) = Eigen::RowVector3d(0.0, 0.0, -s);
+    c.abscissaMm[i] = s;
+    c.radiusMm[i] = radius(s);
+  }
+  return c;
+}
+
+// Issue 46 item 9: with no internal iliac in view, where the common iliac narrows into its external
+// iliac — found at the step (the first level where more than half of the next 5 mm is the narrower
+// vessel), not in the shared lumen above the flow divider, not on a common iliac's gentle taper.
+TEST(IliacNarrowing, StepIntoTheExternalIliac_FoundAtTheStep)
+{
+  // A 7 mm lumen radius (with the aorta's 12 mm shared lumen over the first 12 mm) narrowing to 5 mm
+  // (0.71: an external iliac of three quarters the outer diameter, with a 1.5 mm wall) at 55 mm.
+  const Centerline step = IliacWithRadii(110.0, [](double s) { return s < 12.0 ? 12.0 : s < 55.0 ? 7.0 : 5.0; });
+  EXPECT_NEAR(IliacNarrowingAbscissa(step), 52.5, 0.5 + 1e-9); // half of [s, s + 5] past 55
+  // A 10 % taper over 80 mm, and the shared lumen alone: no division.
+  EXPECT_TRUE(std::isnan(IliacNarrowingAbscissa(
+    IliacWithRadii(110.0, [](double s) { return s < 12.0 ? 12.0 : 7.0 * (1.0 - 0.1 * s / 110.0); }))));
+  // A step of 15 % (under the 20 % rule): a stenosis-free taper, not a division.
+  EXPECT_TRUE(std::isnan(IliacNarrowingAbscissa(IliacWithRadii(110.0, [](double s) { return s < 55.0 ? 7.0 : 6.0; }))));
+  // Shorter than the search's reach.
+  EXPECT_TRUE(std::isnan(IliacNarrowingAbscissa(IliacWithRadii(34.0, [](double s) { return s < 30.0 ? 7.0 : 5.0; }))));
 }
 
 } // namespace

@@ -445,11 +445,14 @@ INSTANTIATE_TEST_SUITE_P(
 
 /// A 25 mm neck whose crescent of thrombus, 6 mm thick, reaches up the neck so that it lies at
 /// least 2 mm thick under a quarter of the circumference from `belowMm` under the site (its top
-/// tapers over 3 mm: AorticWall.h); no thrombus when belowMm ≤ 0.
+/// tapers over 3 mm: AorticWall.h); no thrombus when belowMm ≤ 0. Its lumen drawn level by level,
+/// as the truth's discs (PhantomParams::neckLumenPerLevel: drawn as a tube round its centre curve
+/// the onset lay 2.6 mm lower than the truth, and every seal read 3.0-3.1 mm long).
 PhantomParams NeckThrombusBelowTheSite(double belowMm)
 {
   PhantomParams p = WallPhantom();
   p.neckLengthMm = 25.0;
+  p.neckLumenPerLevel = true;
   if (belowMm > 0.0)
   {
     p.neckThrombusThicknessMm = 6.0;
@@ -541,10 +544,17 @@ TEST_P(NeckThrombusSeries, NoPassUnderTheMinimumAndTheUncertaintyFollowsTheSlice
   // (the renal ostia pull it), so the interval lies between 0.94 × the slice and the slice.
   EXPECT_LE(fit.proximalSealUncertaintyMm, std::max(2.0, 2.0 * c.sliceMm) + 1e-9);
   EXPECT_GE(fit.proximalSealUncertaintyMm, std::max(2.0, 2.0 * 0.94 * c.sliceMm));
-  // Not asserted yet (issue 46 item 2 open): the reading within its uncertainty of the truth. On
-  // this series it reads 3.0-3.1 mm long on 0.8 and 1 mm slices too (9 for 5.9, 15 for 11.9, 17
-  // for 13.9 mm): the phantom's drawing, not the plan's reading (docs/limitations.md: drawn per
-  // level it reads −0.6…+0.2 mm; that drawing waits for two classes it uncovered).
+  // The reading within its stated uncertainty of the truth, and on slices of 1 mm or less within
+  // 1 mm (the issue's bar: the onset placed no better than the 1 mm wall planes). Read from the
+  // graft's proximal edge, which lies at the site as read (its margin and the renal edge's
+  // uncertainty below it): −0.4 mm on every thin slice here, −1.7…+1.1 mm on 2.5-3 mm slices.
+  // (The phantom's lumen drawn as a tube round its centre curve read 3.0-3.1 mm long on every
+  // slice: PhantomParams::neckLumenPerLevel.)
+  EXPECT_NEAR(fit.proximalSealLengthMm, truth, fit.proximalSealUncertaintyMm);
+  if (c.sliceMm <= 1.0 + 1e-9)
+  {
+    EXPECT_NEAR(fit.proximalSealLengthMm, truth, 1.0);
+  }
   // The safety the issue asks for: no passed fit check on a healthy neck under the 10 mm minimum.
   if (truth < 10.0)
   {
