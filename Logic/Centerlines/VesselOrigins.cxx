@@ -9,6 +9,8 @@
 
 #include <Eigen/Dense>
 
+#include "Common/Median.h"
+
 namespace sgp
 {
 namespace
@@ -89,10 +91,7 @@ double IliacNarrowingAbscissa(const Centerline& iliac)
     for (Eigen::Index i = 0; i < n; ++i)
       if (iliac.abscissaMm[i] >= from - 1e-9 && iliac.abscissaMm[i] <= to + 1e-9)
         radii.push_back(iliac.radiusMm[i]);
-    if (radii.empty())
-      return std::numeric_limits<double>::quiet_NaN();
-    std::nth_element(radii.begin(), radii.begin() + std::ptrdiff_t(radii.size() / 2), radii.end());
-    return radii[radii.size() / 2];
+    return radii.empty() ? std::numeric_limits<double>::quiet_NaN() : Median(radii);
   };
   const double length = iliac.LengthMm();
   for (double s = IliacNarrowingSearchFromMm; s + 5.0 <= length + 1e-9; s += 0.5)

@@ -228,7 +228,7 @@ double AorticWall::NeckLumenSignedDistance(const Coordinates& c) const
   // Beyond the stretch too, by three of the tube's 2 mm samples: its chords and nearest-point
   // radii reach that far from each taper (bands of "thrombus" 1–3 mm beyond them).
   const double from = std::max(m_SacTop - 6.0, 0.0), to = std::min(m_SacTop + m_NeckThrombusLengthMm + 6.0, m_TopH);
-  if (!m_NeckLumenPerLevel || !(m_NeckThrombusMm > 0.0) || c.beyondMm > 0.0 || c.h <= from || c.h >= to)
+  if (!DrawsNeckLumenPerLevel() || c.beyondMm > 0.0 || c.h <= from || c.h >= to)
     return std::numeric_limits<double>::quiet_NaN();
   const Eigen::Vector2d d = c.q - LumenCentre(c.h);
   const double r = d.norm();

@@ -114,10 +114,9 @@ public:
   /// The lumen centerline sampled every `stepMm` of h (LPS), with its radius.
   void SampleLumen(double stepMm, std::vector<Point3>& points, std::vector<double>& radii) const;
   /// With PhantomParams::neckLumenPerLevel (else NaN everywhere): the lumen's signed distance at
-  /// `c` where it is drawn level by level — the neck thrombus's
-  /// stretch and 6 mm beyond either end, h in (sac top − 6, sac top + neckThrombusLengthMm + 6) —
-  /// and NaN elsewhere, where the lumen
-  /// is the tube round its centre curve (SampleLumen). Per level: the in-plane distance to that
+  /// `c` where it is drawn level by level — the neck thrombus's stretch and 6 mm beyond either
+  /// end, h in (sac top − 6, sac top + neckThrombusLengthMm + 6) — and NaN elsewhere, where the
+  /// lumen is the tube round its centre curve (SampleLumen). Per level: the in-plane distance to that
   /// level's lumen disc, |q − centre(h)| − radius(h), over the gradient norm √(1 + (∂/∂h)²) (a
   /// first-order signed distance, mm, negative inside). Over the neck crescent's 3 mm tapers the
   /// centre moves up to half the thrombus sideways; a tube round that curve (its radius at the
