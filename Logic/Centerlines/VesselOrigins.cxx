@@ -20,6 +20,8 @@ constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 constexpr double snapMm = 10.0;       ///< axes meeting farther from the junction are not trusted
 constexpr double minimumSkipMm = 5.0; ///< the least length of a branch's centerline left out at a junction
 constexpr double chordMm = 15.0;      ///< each internal iliac chord's length
+/// B's iliac chords start where the inscribed radius is within this of the iliac's own.
+constexpr double SharedLumenRadiusRatio = 1.2;
 /// How far below the skeleton's junction (along the aorta) the axes may meet and still be B, mm:
 /// straight iliacs met 0.3–2.5 mm above it on the phantoms (LandmarksPlanTest, IliacVariants).
 constexpr double belowJunctionToleranceMm = 1.0;
@@ -129,7 +131,21 @@ std::vector<Line> BifurcationAxes(const CenterlineTree& tree)
     const double origin = FoundInternalIliacOriginAbscissa(tree, side);
     const double end = std::isfinite(origin) ? std::min(BifurcationIliacReachMm, origin - 5.0)
                                              : std::min(BifurcationIliacReachMm, iliac.LengthMm());
-    const double from = std::min(10.0, 0.5 * end);
+    double from = std::min(10.0, 0.5 * end);
+    // Below a wide distal aorta the iliac's first centimetre or two still runs in the lumen both
+    // iliacs share, on the skeleton of that lumen (lateral of the iliac's axis: B read 2.7 mm high
+    // on a 30 mm distal aorta on 2.5 mm slices): the chord starts where the inscribed radius has
+    // come down to within SharedLumenRadiusRatio of the iliac's own (the median over the chord's
+    // last 10 mm), keeping at least 10 mm of chord.
+    if (end - from >= 20.0)
+    {
+      std::vector<double> own;
+      for (double s = end - 10.0; s <= end + 1e-9; s += 1.0)
+        own.push_back(RadiusAt(iliac, s));
+      const double ownRadius = Median(own);
+      while (from < end - 10.0 && RadiusAt(iliac, from) > SharedLumenRadiusRatio * ownRadius)
+        from += 0.5;
+    }
     if ((PositionAt(iliac, end) - PositionAt(iliac, from)).norm() > 1.0)
       axes.push_back(Chord(iliac, from, end));
   }

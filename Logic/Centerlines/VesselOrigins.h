@@ -15,11 +15,13 @@
 ///    internal iliac was labelled.
 ///  - **Aortic bifurcation** B: the point nearest to the axes of the distal aorta (chord 25…5 mm
 ///    above the skeleton's junction) and of both common iliacs (chords from min(10 mm, half the
-///    stretch) to min(30 mm, internal iliac origin − 5 mm) below it) — on a 30 mm distal aorta on
-///    2.5 mm slices these chords start in the cross-section both iliacs share, where the skeleton
-///    runs toward its middle, and B reads 2.7 mm high (FlowDividerPlanTest; issue 46 item 7, open:
-///    chords from the flow divider read it within 0.1 mm there, but raised B on two real AVT aortas
-///    enough that their scans cut 10 mm below it no longer held the Y); the junction when an
+///    stretch) to min(30 mm, internal iliac origin − 5 mm) below it; where that chord is 20 mm or
+///    longer, its start moves down until the iliac's inscribed radius is within 1.2 × its own (the
+///    median over the chord's last 10 mm): below a wide distal aorta the first centimetre or two of
+///    the iliac's centerline runs on the skeleton of the lumen both iliacs share, lateral of the
+///    iliac's axis, and on a 30 mm distal aorta on 2.5 mm slices B read 2.7 mm high from there
+///    (0.5 mm with the moved start, FlowDividerPlanTest; chords started at the flow divider instead
+///    had raised B on two real AVT aortas); the junction when an
 ///    iliac chord is shorter than 1 mm, the axes meet farther than 10 mm from it, or — on scans with voxels of 1.25 mm
 ///    or finer, where the junction lies distal to B — they meet more than 1 mm below it along the aorta: such iliac
 ///    axes do not run straight up to B, a common iliac that kinks near its start (on the phantoms with 30–45° kinks 10

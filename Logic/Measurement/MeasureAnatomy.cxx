@@ -9,6 +9,7 @@
 #include "Centerlines/VesselOrigins.h"
 #include "Common/Format.h"
 #include "Common/Median.h"
+#include "Measurement/DistalAorta.h"
 #include "Measurement/MeasureOuterWall.h"
 #include "Measurement/SectionTilt.h"
 #include "Stent/StentMesh.h"
@@ -93,8 +94,19 @@ std::pair<RingDiameters, RingDiameters> MeasureNeckDiameters(const MeasureContex
   return { a, b };
 }
 
-/// (c) the widest ring between the site and B, (d) the narrowest below it; returns (c)'s ring index.
-std::size_t MeasureSacDiameters(const MeasureContext& c, Measurements& out)
+/// The distal aorta's direction below the trunk's last ring (unit, LPS): from the centerline 20 mm
+/// above that ring to B — the axis the sections are read ⊥ to. Not the centerline's tangent near its
+/// end, which bends toward an iliac: tilted 13° there, its planes read a steep funnel 1 mm wide.
+Eigen::Vector3d DistalDirection(const MeasureContext& c)
+{
+  const double s = std::max(0.0, c.trunk.rings.back().abscissaMm - 20.0);
+  return Eigen::Vector3d(c.B - PositionAt(c.tree.aorta, s)).normalized();
+}
+
+/// (c) the widest ring between the site and B, (d) the narrowest below it — on down to B on the
+/// lumen's sections where the trunk still narrows at its last ring (DistalAorta.h); returns (c)'s
+/// ring index.
+std::size_t MeasureSacDiameters(const MeasureContext& c, const LabelImage* lumen, Measurements& out)
 {
   const DiameterProfile& trunk = c.trunk;
   std::size_t widest = 0;
@@ -106,12 +118,34 @@ std::size_t MeasureSacDiameters(const MeasureContext& c, Measurements& out)
     Diameter("maxAneurysmLumenDiameter", trunk.rings[widest], "aorta",
              "(c) largest mean ring diameter between the proximal site and the aortic bifurcation, lumen"));
   std::size_t narrowest = widest;
+  std::vector<AbscissaDiameter> below;
   for (std::size_t k = widest; k < trunk.rings.size(); ++k)
+  {
+    below.push_back({ trunk.rings[k].abscissaMm, trunk.rings[k].meanMm });
     if (trunk.rings[k].meanMm < trunk.rings[narrowest].meanMm)
       narrowest = k;
-  out.values.push_back(Diameter("distalNeckMinLumenDiameter", trunk.rings[narrowest], "aorta",
-                                "(d) smallest mean ring diameter between (c) and the trunk's last ring (3 stent radii "
-                                "above the flow divider), lumen"));
+  }
+  const RingDiameters& last = trunk.rings.back();
+  DistalSection section;
+  if (lumen && StillNarrowingAtItsEnd(below))
+  {
+    const FlowDivider& divider = out.flowDivider;
+    // Down to B's level along that direction (the centerline's abscissa runs ahead of the height
+    // where it bends at its end).
+    const Eigen::Vector3d down = DistalDirection(c);
+    const double reach = std::max(0.0, (c.B - last.centre).dot(down));
+    section = NarrowestLumenSectionBelow(*lumen, last.centre, last.abscissaMm, down, last.abscissaMm + reach,
+                                         divider.found ? &divider.lps : nullptr);
+  }
+  if (section.found && section.section.meanMm < trunk.rings[narrowest].meanMm)
+    out.values.push_back(
+      Diameter("distalNeckMinLumenDiameter", section.section, "aorta",
+               "(d) smallest mean diameter between (c) and the aortic bifurcation: the aorta still narrows at the "
+               "trunk's last ring, so read below it on the lumen's cross-sections down to the bifurcation, lumen"));
+  else
+    out.values.push_back(Diameter("distalNeckMinLumenDiameter", trunk.rings[narrowest], "aorta",
+                                  "(d) smallest mean ring diameter between (c) and the trunk's last ring (3 stent "
+                                  "radii above the flow divider), lumen"));
   return widest;
 }
 
@@ -228,13 +262,9 @@ void MeasureLengths(const MeasureContext& c, double sNeckEnd, double iliacOffset
 /// aortic centerline extended along the distal aorta's axis) and from the divider to each internal
 /// iliac origin along the iliac centerline (FlowDivider.h); NaN with a warning where it was not
 /// found or no lumen mask was given.
-void MeasureFlowDividerLengths(const MeasureContext& c, const LabelImage* lumen, Measurements& out)
+void MeasureFlowDividerLengths(const MeasureContext& c, Measurements& out)
 {
-  FlowDivider& f = out.flowDivider;
-  if (lumen)
-    f = FindFlowDivider(*lumen, c.tree);
-  else
-    f.reason = "no lumen mask was given";
+  const FlowDivider& f = out.flowDivider; // found before (d), which stops at it
   if (!f.found)
     out.warnings.push_back(
       "The flow divider (where the aortic lumen divides into the iliacs) was not found: " + f.reason +
@@ -562,14 +592,18 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
     if (std::isfinite(c.internalIliacAbscissa[side]))
       out.internalIliacOriginLps[side] = PositionAt(*c.iliac[side], c.internalIliacAbscissa[side]);
 
+  if (lumen)
+    out.flowDivider = FindFlowDivider(*lumen, tree);
+  else
+    out.flowDivider.reason = "no lumen mask was given";
   const RingDiameters a = MeasureNeckDiameters(c, out).first;
-  const std::size_t widest = MeasureSacDiameters(c, out);
+  const std::size_t widest = MeasureSacDiameters(c, lumen, out);
   for (int side = 0; side < 2; ++side)
     MeasureIliacLandingZone(c, side, out);
   WarnDistortedAorticRings(out);
   if (wall)
   {
-    OuterWallLevels levels{ c.sSite, c.sBif, c.trunk.rings.back().abscissaMm, {}, {} };
+    OuterWallLevels levels{ c.sSite, c.sBif, c.trunk.rings.back().abscissaMm, {}, {}, c.B, DistalDirection(c) };
     for (int side = 0; side < 2; ++side)
     {
       levels.landingToMm[side] = out.profiles[1 + side].rings.back().abscissaMm;
@@ -594,7 +628,7 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
     out.iliacStartBeyondBifurcationMm[side] = iliacOffset[side];
     out.internalIliacAbscissaMm[side] = c.internalIliacAbscissa[side];
   }
-  MeasureFlowDividerLengths(c, lumen, out);
+  MeasureFlowDividerLengths(c, out);
   MeasureNeckAngles(c, sNeckEnd, a, out);
   MeasureIliacAccess(c, iliacOffset, out);
   LeaveOutWhatTheScanDoesNotHold(c, out);

@@ -14,7 +14,9 @@
 ///    the proximal site; (b) `neckLumenDiameter15mm` 15 mm below it; (c)
 ///    `maxAneurysmLumenDiameter` the largest between the site and B; (d)
 ///    `distalNeckMinLumenDiameter` the smallest between (c)'s ring and the trunk's last ring (3
-///    stent radii above the junction, away from the flow divider); (e)/(f)
+///    stent radii above the junction, away from the flow divider) — and where the trunk still
+///    narrows at that ring (a sac narrowing into the bifurcation), on down to B on the lumen's
+///    cross-sections (DistalAorta.h), its min and max theirs; (e)/(f)
 ///    `rightIliacLumenDiameter`/`leftIliacLumenDiameter` the median over the leg's rings in its
 ///    distal 15 mm (the distal landing zone, ending 5 mm above the internal iliac origin), leaving
 ///    out distorted rings (smallest diameter under half the mean: the fit folded there, as in a

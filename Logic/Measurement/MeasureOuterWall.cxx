@@ -5,6 +5,7 @@
 
 #include "Common/Format.h"
 #include "Common/Median.h"
+#include "Measurement/DistalAorta.h"
 
 namespace sgp
 {
@@ -205,17 +206,36 @@ void MeasureOuterWall(const VesselWall& wall, const OuterWallLevels& levels, Mea
     }
   }
   RequireCovered(out.values.back(), aorta, levels.siteMm, std::min(levels.bifurcationMm, levels.trunkEndMm), out);
+  // (d) down to the trunk's last ring, or on down to B where the wall still narrows there
+  // (DistalAorta.h: a sac that narrows into the bifurcation).
+  std::vector<AbscissaDiameter> toTrunkEnd;
+  for (const OuterWallPlane& p : aorta.planes)
+    if (widest && p.abscissaMm >= widest->abscissaMm && p.abscissaMm <= levels.trunkEndMm + 1e-9 && p.Usable())
+      toTrunkEnd.push_back({ p.abscissaMm, p.areaDiameterMm });
+  const bool toBifurcation = StillNarrowingAtItsEnd(toTrunkEnd) && levels.bifurcationMm > levels.trunkEndMm;
+  const double dEndMm = toBifurcation ? levels.bifurcationMm : levels.trunkEndMm;
+  // Below the trunk's last ring a plane counts only when its centre lies above B's level (half a
+  // millimetre's grace): the lumen's centerline bends into an iliac at its end, and a plane there
+  // cuts the iliac's origin obliquely (14.7 mm for 19.1, 0.9 mm below B, on issue 46's sweep).
+  const auto counts = [&](const OuterWallPlane& p)
+  {
+    return p.abscissaMm <= levels.trunkEndMm + 1e-9 ||
+           (p.centreLps - levels.bifurcationLps).dot(levels.distalDirection) <= 0.5;
+  };
   const OuterWallPlane* narrowest = nullptr;
   for (const OuterWallPlane& p : aorta.planes)
-    if (widest && p.abscissaMm >= widest->abscissaMm && p.abscissaMm <= levels.trunkEndMm + 1e-9 && p.Usable() &&
+    if (widest && p.abscissaMm >= widest->abscissaMm && p.abscissaMm <= dEndMm + 1e-9 && p.Usable() && counts(p) &&
         (!narrowest || p.areaDiameterMm < narrowest->areaDiameterMm))
       narrowest = &p;
-  out.values.push_back(OuterDiameter(
-    "distalNeckMinDiameter", narrowest, narrowest ? narrowest->areaDiameterMm : nan,
-    narrowest ? narrowest->supportedFraction : 0.0, "aorta", narrowest ? narrowest->abscissaMm : levels.trunkEndMm,
-    "(d) smallest area-equivalent diameter between (c) and the trunk's last ring", out));
+  out.values.push_back(
+    OuterDiameter("distalNeckMinDiameter", narrowest, narrowest ? narrowest->areaDiameterMm : nan,
+                  narrowest ? narrowest->supportedFraction : 0.0, "aorta", narrowest ? narrowest->abscissaMm : dEndMm,
+                  toBifurcation ? "(d) smallest area-equivalent diameter between (c) and the aortic bifurcation (the "
+                                  "wall still narrows at the trunk's last ring)"
+                                : "(d) smallest area-equivalent diameter between (c) and the trunk's last ring",
+                  out));
   if (widest)
-    RequireCovered(out.values.back(), aorta, widest->abscissaMm, levels.trunkEndMm, out);
+    RequireCovered(out.values.back(), aorta, widest->abscissaMm, dEndMm, out);
   for (int side = 0; side < 2; ++side)
     out.values.push_back(OuterIliac(wall, side, levels, out));
 

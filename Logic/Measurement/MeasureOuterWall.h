@@ -9,7 +9,9 @@
 ///    plane nearest the level (within one step), with the contour's smallest and largest width
 ///    beside it; (c) is the largest maximum caliper (guidelines: Dmax "in any direction");
 ///  - (a) at the site, (b) 15 mm below, (c) over [site, B], (d) the smallest from (c)'s plane to
-///    `trunkEndMm`, (e)/(f) the median over each iliac's planes in [landing from, landing to];
+///    `trunkEndMm` — to B where the planes still narrow there (DistalAorta.h; below the last ring
+///    only planes whose centre lies above B's level), (e)/(f) the median over each iliac's
+///    planes in [landing from, landing to];
 ///  - **support**: a level whose plane is less than `estimatedBelow` (60 %) supported, or whose
 ///    contour is interpolated between traced planes, is `estimated` with a warning; a plane
 ///    without a contour (SegmentOuterWall: under 25 % and no traced plane on both sides) or none
@@ -43,6 +45,10 @@ struct OuterWallLevels
   double bifurcationMm = 0.0;                                               ///< B along the aorta
   double trunkEndMm = 0.0;                                                  ///< the trunk's last ring
   std::array<double, 2> landingFromMm{ 0.0, 0.0 }, landingToMm{ 0.0, 0.0 }; ///< along each iliac
+  /// B and the distal aorta's direction toward it (unit, LPS): below the trunk's last ring a plane
+  /// whose centre lies past B's level is not the aorta's (the centerline bends into an iliac).
+  Point3 bifurcationLps = Point3::Zero();
+  Eigen::Vector3d distalDirection = Eigen::Vector3d::Zero();
 };
 
 /// Share of a level's circumference under which its outer diameter is an estimate (issue 12).

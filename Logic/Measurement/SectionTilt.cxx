@@ -36,23 +36,6 @@ double BoundaryDistance(const LabelImage& lumen, const Point3& centre, const Eig
   return r;
 }
 
-/// Distance from `centre` along unit `e` to where the smooth mask first falls below 0.5.
-double SmoothBoundaryDistance(const SmoothMask& mask, const Point3& centre, const Eigen::Vector3d& e)
-{
-  double in = 0.0, out = 0.5;
-  while (out < farthestMm && mask(centre + out * e) >= 0.5)
-  {
-    in = out;
-    out += 0.5;
-  }
-  while (out - in > 0.01)
-  {
-    const double mid = 0.5 * (in + out);
-    (mask(centre + mid * e) >= 0.5 ? in : out) = mid;
-  }
-  return 0.5 * (in + out);
-}
-
 /// One plane's diameters through `centre`: their mean, smallest and largest.
 struct PlaneReading
 {
@@ -71,6 +54,22 @@ PlaneReading ReadPlane(const SmoothMask& mask, const Point3& centre, const Eigen
 }
 
 } // namespace
+
+double SmoothBoundaryDistance(const SmoothMask& mask, const Point3& centre, const Eigen::Vector3d& e)
+{
+  double in = 0.0, out = 0.5;
+  while (out < farthestMm && mask(centre + out * e) >= 0.5)
+  {
+    in = out;
+    out += 0.5;
+  }
+  while (out - in > 0.01)
+  {
+    const double mid = 0.5 * (in + out);
+    (mask(centre + mid * e) >= 0.5 ? in : out) = mid;
+  }
+  return 0.5 * (in + out);
+}
 
 double LumenMeanDiameterMm(const LabelImage& lumen,
                            const Point3& centre,

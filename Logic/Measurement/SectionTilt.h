@@ -20,10 +20,15 @@
 /// Errors: none (a ray that never leaves the lumen ends at 100 mm).
 #pragma once
 
+#include "Common/SmoothMask.h"
 #include "Common/Types.h"
 
 namespace sgp
 {
+
+/// Distance from `centre` along unit `e` to where `mask` first falls below 0.5: 0.5 mm march, then
+/// bisection to 0.01 mm (at most 100 mm out), mm.
+double SmoothBoundaryDistance(const SmoothMask& mask, const Point3& centre, const Eigen::Vector3d& e);
 
 double LumenMeanDiameterMm(const LabelImage& lumen,
                            const Point3& centre,

@@ -8,7 +8,9 @@
 ///    through the first pass's contour centroids (OuterWallAxis, averaged over ±axisHalfWindowMm),
 ///    so that an eccentric thrombus does not tilt the planes (SegmentOuterWall.h).
 ///  - Stretches (abscissae, mm): the aorta from `aboveSiteMm` above the proximal site to the
-///    bifurcation B (FindAorticBifurcation; at most the centerline's end); each common iliac from
+///    bifurcation B (FindAorticBifurcation; where B lies beyond the centerline's end — the
+///    skeleton's junction lies above B on thick slices — the centerline carried straight on along
+///    its last direction to B, so that (d) can be read down to B: DistalAorta.h); each common iliac from
 ///    its start to its internal iliac origin (InternalIliacOriginAbscissa), or to its end where no
 ///    origin was found.
 ///  - **Wall thickness** w: the aortic wall and the thrombus share the HU band of soft tissue
