@@ -66,7 +66,7 @@ DistalSection NarrowestLumenSectionBelow(const LabelImage& lumen,
                                          const Point3& from,
                                          double fromMm,
                                          const Eigen::Vector3d& down,
-                                         double throughMm,
+                                         double reachMm,
                                          const Point3* divider,
                                          int diameterCount)
 {
@@ -76,12 +76,11 @@ DistalSection NarrowestLumenSectionBelow(const LabelImage& lumen,
     return out;
   const SmoothMask mask(lumen);
   // Every 1 mm, and B's own level (the last ring may lie less than a step above it).
-  const double reach = throughMm - fromMm;
   std::vector<double> depths;
-  for (double depth = sectionStepMm; depth < reach - 0.05; depth += sectionStepMm)
+  for (double depth = sectionStepMm; depth < reachMm - 0.05; depth += sectionStepMm)
     depths.push_back(depth);
-  if (reach > 0.05)
-    depths.push_back(reach);
+  if (reachMm > 0.05)
+    depths.push_back(reachMm);
   for (const double depth : depths)
   {
     const Point3 centre = from + depth * axis;

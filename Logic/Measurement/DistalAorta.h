@@ -23,7 +23,7 @@
 /// NarrowestLumenSectionBelow: the lumen's sections in planes ⊥ `down`, every 1 mm below `from`
 /// (the trunk's last ring centre, abscissa `fromMm`) along the straight line `down` — the distal
 /// aorta's axis, toward B; the skeleton's last millimetres bend toward one iliac at the junction —
-/// and at `throughMm` (B) itself (the last ring may lie less than a step above it); none at or
+/// and at B's level, `reachMm` below `from` (the last ring may lie less than a step above it); none at or
 /// below the flow divider's level (`divider`, when found) or with its centre off the lumen. Each section is read as
 /// SectionTilt.h reads a plane: the mask interpolated trilinearly, its edge where it crosses 0.5, `diameterCount`
 /// diameters; the narrowest by mean diameter is returned as a RingDiameters (abscissa fromMm + depth, mean, min, max,
@@ -63,7 +63,7 @@ DistalSection NarrowestLumenSectionBelow(const LabelImage& lumen,
                                          const Point3& from,
                                          double fromMm,
                                          const Eigen::Vector3d& down,
-                                         double throughMm,
+                                         double reachMm,
                                          const Point3* divider,
                                          int diameterCount = 16);
 

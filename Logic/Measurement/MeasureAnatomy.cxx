@@ -104,9 +104,12 @@ Eigen::Vector3d DistalDirection(const MeasureContext& c)
 }
 
 /// (c) the widest ring between the site and B, (d) the narrowest below it — on down to B on the
-/// lumen's sections where the trunk still narrows at its last ring (DistalAorta.h); returns (c)'s
-/// ring index.
-std::size_t MeasureSacDiameters(const MeasureContext& c, const LabelImage* lumen, Measurements& out)
+/// lumen's sections ⊥ `down` (DistalDirection) where the trunk still narrows at its last ring
+/// (DistalAorta.h); returns (c)'s ring index.
+std::size_t MeasureSacDiameters(const MeasureContext& c,
+                                const LabelImage* lumen,
+                                const Eigen::Vector3d& down,
+                                Measurements& out)
 {
   const DiameterProfile& trunk = c.trunk;
   std::size_t widest = 0;
@@ -130,11 +133,10 @@ std::size_t MeasureSacDiameters(const MeasureContext& c, const LabelImage* lumen
   if (lumen && StillNarrowingAtItsEnd(below))
   {
     const FlowDivider& divider = out.flowDivider;
-    // Down to B's level along that direction (the centerline's abscissa runs ahead of the height
-    // where it bends at its end).
-    const Eigen::Vector3d down = DistalDirection(c);
+    // Down to B's level along the distal aorta's direction (the centerline's abscissa runs ahead
+    // of the height where it bends at its end).
     const double reach = std::max(0.0, (c.B - last.centre).dot(down));
-    section = NarrowestLumenSectionBelow(*lumen, last.centre, last.abscissaMm, down, last.abscissaMm + reach,
+    section = NarrowestLumenSectionBelow(*lumen, last.centre, last.abscissaMm, down, reach,
                                          divider.found ? &divider.lps : nullptr);
   }
   if (section.found && section.section.meanMm < trunk.rings[narrowest].meanMm)
@@ -597,13 +599,14 @@ Measurements MeasureAnatomy(const CenterlineTree& tree,
   else
     out.flowDivider.reason = "no lumen mask was given";
   const RingDiameters a = MeasureNeckDiameters(c, out).first;
-  const std::size_t widest = MeasureSacDiameters(c, lumen, out);
+  const Eigen::Vector3d distalDirection = DistalDirection(c);
+  const std::size_t widest = MeasureSacDiameters(c, lumen, distalDirection, out);
   for (int side = 0; side < 2; ++side)
     MeasureIliacLandingZone(c, side, out);
   WarnDistortedAorticRings(out);
   if (wall)
   {
-    OuterWallLevels levels{ c.sSite, c.sBif, c.trunk.rings.back().abscissaMm, {}, {}, c.B, DistalDirection(c) };
+    OuterWallLevels levels{ c.sSite, c.sBif, c.trunk.rings.back().abscissaMm, {}, {}, c.B, distalDirection };
     for (int side = 0; side < 2; ++side)
     {
       levels.landingToMm[side] = out.profiles[1 + side].rings.back().abscissaMm;

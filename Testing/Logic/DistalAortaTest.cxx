@@ -99,7 +99,7 @@ TEST_P(DistalSections, ReadDownTheFunnelToB)
     Eigen::AngleAxisd(20.0 * pi / 180.0, Eigen::Vector3d::UnitX()) * Eigen::Vector3d::UnitZ();
   const auto image = Cone(axis, 10.0, coneSlope, GetParam());
   const Point3 from = 15.0 * axis;
-  const DistalSection d = NarrowestLumenSectionBelow(*image, from, 100.0, -axis, 115.0, nullptr);
+  const DistalSection d = NarrowestLumenSectionBelow(*image, from, 100.0, -axis, 15.0, nullptr);
   ASSERT_TRUE(d.found);
   EXPECT_NEAR(d.section.abscissaMm, 115.0, 1e-9);
   EXPECT_NEAR(d.section.meanMm, 20.0, SectionBar(GetParam()));
@@ -116,7 +116,7 @@ TEST_P(DistalSections, NotPastTheFlowDivider)
   const Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
   const auto image = Cone(axis, 10.0, coneSlope, GetParam());
   const Point3 divider = 5.0 * axis + Eigen::Vector3d(3.0, 0.0, 0.0); // off the axis: only its level counts
-  const DistalSection d = NarrowestLumenSectionBelow(*image, Point3(15.0 * axis), 100.0, -axis, 115.0, &divider);
+  const DistalSection d = NarrowestLumenSectionBelow(*image, Point3(15.0 * axis), 100.0, -axis, 15.0, &divider);
   ASSERT_TRUE(d.found);
   EXPECT_NEAR(d.section.abscissaMm, 109.0, 1e-9);
   EXPECT_NEAR(d.section.meanMm, 26.0, SectionBar(GetParam()));
@@ -128,12 +128,12 @@ TEST_P(DistalSections, BsOwnLevelLessThanAStepBelow)
   // a steep funnel read 18.9 for 17.4 mm on issue 46's sweep); at B itself, nothing below.
   const auto image = Cone(Eigen::Vector3d::UnitZ(), 10.0, coneSlope, GetParam());
   const DistalSection d =
-    NarrowestLumenSectionBelow(*image, Point3(0.0, 0.0, 0.6), 100.0, -Eigen::Vector3d::UnitZ(), 100.6, nullptr);
+    NarrowestLumenSectionBelow(*image, Point3(0.0, 0.0, 0.6), 100.0, -Eigen::Vector3d::UnitZ(), 0.6, nullptr);
   ASSERT_TRUE(d.found);
   EXPECT_NEAR(d.section.abscissaMm, 100.6, 1e-9);
   EXPECT_NEAR(d.section.meanMm, 20.0, SectionBar(GetParam()));
   EXPECT_FALSE(
-    NarrowestLumenSectionBelow(*image, Point3::Zero(), 100.0, -Eigen::Vector3d::UnitZ(), 100.0, nullptr).found);
+    NarrowestLumenSectionBelow(*image, Point3::Zero(), 100.0, -Eigen::Vector3d::UnitZ(), 0.0, nullptr).found);
 }
 
 INSTANTIATE_TEST_SUITE_P(Slices,
