@@ -161,7 +161,7 @@ Point3 OuterAxisPoint(const VesselWall* wall, const Centerline& aorta, double s)
   const OuterWallPlane* p = wall ? PlaneAt(wall->vessels[0], s, wall->stepMm) : nullptr;
   if (!p || p->flagged)
     return PositionAt(aorta, s);
-  return p->contourLps.colwise().mean().transpose();
+  return p->centroidLps;
 }
 
 void MeasureOuterWall(const VesselWall& wall, const OuterWallLevels& levels, Measurements& out)

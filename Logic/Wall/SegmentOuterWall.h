@@ -120,7 +120,12 @@ struct OuterWallPlane
   Eigen::Vector3d uLps = Eigen::Vector3d::UnitX(),
                   vLps = Eigen::Vector3d::UnitY(); ///< the plane's axes (ray 0 along u)
   double supportedFraction = 0.0;
-  double areaMm2 = 0.0;        ///< inside the outer contour
+  double areaMm2 = 0.0; ///< inside the outer contour
+  /// The contour's area centroid (LPS mm): the vessel's centre in this plane. Not the mean of the
+  /// contour's points: the rays leave from the lumen's centre, which an eccentric thrombus moves
+  /// off the vessel's axis, and their ends crowd on the near side (3.8 mm toward the lumen in a
+  /// 62 mm sac with a 15 mm crescent).
+  Point3 centroidLps = Point3::Zero();
   double lumenAreaMm2 = 0.0;   ///< inside the lumen's edge along the rays
   double areaDiameterMm = 0.0; ///< of the contour polygon, 2·√(area/π)
   double minCaliperMm = 0.0;   ///< smallest width of the contour (over 180 directions)
@@ -156,8 +161,13 @@ OuterWall SegmentOuterWall(const CtImage& ct,
 /// projected on the plane; linear between rays), mm.
 double OuterRadiusToward(const OuterWallPlane& plane, const Eigen::Vector3d& d);
 
-/// The vessel's axis through the outer contours: their centroids (flagged planes left out),
-/// averaged over ±`halfWindowMm` of abscissa; empty (no points) with fewer than two planes.
+/// The vessel's axis through the outer contours, one point per plane (flagged ones too): the
+/// smoothing spline (Whittaker: weighted squares plus λ·second differences, λ = (halfWindowMm /
+/// step)⁴, about ±halfWindowMm of smoothing) through the traced planes' area centroids, twice: all
+/// weighing alike, then each weighing by how far its plane's tilt off that first axis can have
+/// moved it — 1 / (1 + (k·R·tan θ / 0.5 mm)²), k the change of the area radius R per mm: across a
+/// sac's shoulders, where the lumen's centerline leans through an eccentric crescent, the axis
+/// runs on from the necks and the sac's middle. Empty (no points) with fewer than two traced planes.
 Centerline OuterWallAxis(const OuterWall& wall, const std::string& name, double halfWindowMm);
 
 } // namespace sgp

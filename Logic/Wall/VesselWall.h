@@ -5,8 +5,9 @@
 /// the wall, and the calcium in it — what the measurements read on the outer wall.
 ///
 ///  - Two passes per vessel: planes ⊥ the lumen's centerline, then planes ⊥ the vessel's axis
-///    through the first pass's contour centroids (OuterWallAxis, averaged over ±axisHalfWindowMm),
-///    so that an eccentric thrombus does not tilt the planes (SegmentOuterWall.h).
+///    through the first pass's contours' area centroids (OuterWallAxis: a smoothing spline over
+///    about ±axisHalfWindowMm that runs on straight across the sac's shoulders), so that an
+///    eccentric thrombus does not tilt the planes (SegmentOuterWall.h).
 ///  - Stretches (abscissae, mm): the aorta from `aboveSiteMm` above the proximal site to the
 ///    bifurcation B (FindAorticBifurcation; where B lies beyond the centerline's end — the
 ///    skeleton's junction lies above B on thick slices — the centerline carried straight on along
@@ -50,7 +51,7 @@ struct VesselWallParams
   double aboveSiteMm = 10.0;     ///< how far above the proximal site the aortic wall is traced, [0, 50]
   double wallThicknessMm = -1.0; ///< < 0: estimated (see the file comment); else used as given, ≤ 5
   double calciumHu = 1000.0;     ///< see the file comment
-  double axisHalfWindowMm = 5.0; ///< the second pass's axis: contour centroids averaged over ±this, (0, 50]
+  double axisHalfWindowMm = 5.0; ///< the second pass's axis: smoothed over about ±this, (0, 50]
 };
 
 struct VesselWall

@@ -10,7 +10,7 @@ blur, the wall and the neighbours are drawn), so this test draws its own, here i
 different model, and counts its truth voxel by voxel from its own masks:
 
 - an abdominal aorta on the z axis: a 22 mm neck (lumen) with a 1.5 mm wall, a fusiform sac of
-  62 mm outer diameter whose lumen lies off-centre in an **eccentric** crescent of thrombus (or a
+  60 mm outer diameter (a bulge on the neck-to-distal taper) whose lumen lies off-centre in an **eccentric** crescent of thrombus (or a
   **concentric** ring of it), an 18 mm distal aorta; renal arteries (the left one the lowest: its
   lower lumen edge is the proximal site), a superior mesenteric artery, common iliacs of unequal
   size (14 and 10 mm) with internal and external iliacs;
@@ -50,7 +50,7 @@ HU = {"tissue": 40.0, "fat": -100.0, "psoas": 50.0, "ivc": 120.0, "duodenum": 30
 WALL_MM = 1.5
 NECK_LUMEN_R = 11.0  # (a), (b): 22 mm
 DISTAL_LUMEN_R = 9.0  # (d): 18 mm
-SAC_OUTER_R = 31.0  # 62 mm outer
+SAC_OUTER_R = 31.0  # the bulge's peak over the neck's outer radius (Dmax as drawn: 60.0 mm)
 SITE_Z = 150.0  # the left renal's lower lumen edge
 SAC_TOP, SAC_BOTTOM = 122.0, 25.0  # the neck is 28 mm long
 ILIAC_R = {"right": 7.0, "left": 5.0}  # 14 and 10 mm lumen (ratio 1.4)
@@ -197,7 +197,12 @@ def make_scan(path, spacing, concentric, noise_seed):
              "maxAneurysmLumenDiameter": 2 * float(r_lumen.max()), "distalNeckMinLumenDiameter": 2 * DISTAL_LUMEN_R,
              "rightIliacLumenDiameter": 2 * ILIAC_R["right"], "leftIliacLumenDiameter": 2 * ILIAC_R["left"],
              "proximalNeckDiameter": 2 * neck_outer, "neckDiameter15mm": 2 * neck_outer,
-             "maxAneurysmDiameter": 2 * SAC_OUTER_R, "distalNeckMinDiameter": 2 * (DISTAL_LUMEN_R + WALL_MM),
+             # Dmax as drawn: the bulge rides on the neck-to-distal taper, which lies 1 mm under the
+             # neck's outer radius at mid-sac, so the widest outer radius is 30.0 mm, not SAC_OUTER_R
+             # (the truth said 62 mm until issue 46: planes tilted by the lumen's lean read the
+             # sections 0.6-0.9 mm long and hid it).
+             "maxAneurysmDiameter": 2 * float(outer_radius(zs).max()),
+             "distalNeckMinDiameter": 2 * (DISTAL_LUMEN_R + WALL_MM),
              "rightIliacDiameter": 2 * (ILIAC_R["right"] + WALL_MM), "leftIliacDiameter": 2 * (ILIAC_R["left"] + WALL_MM),
              "thrombusVolume": thrombus_mm3 / 1000.0}
     return truth
