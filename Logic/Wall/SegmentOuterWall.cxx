@@ -137,17 +137,20 @@ void FinishPlane(OuterWallPlane& plane)
   double area = 0.0, lumenArea = 0.0;
   Eigen::Vector3d moment = Eigen::Vector3d::Zero(); // Σ wedge area × its centroid's offset from the centre
   const double wedge = 0.5 * std::sin(2 * pi / double(K));
+  std::vector<Eigen::Vector3d> direction(static_cast<std::size_t>(K));
   for (Eigen::Index k = 0; k < K; ++k)
   {
     const double angle = 2 * pi * double(k) / double(K);
-    const Eigen::Vector3d d = std::cos(angle) * plane.uLps + std::sin(angle) * plane.vLps;
-    plane.contourLps.row(k) = (plane.centreLps + plane.outerRadiusMm[k] * d).transpose();
+    direction[std::size_t(k)] = std::cos(angle) * plane.uLps + std::sin(angle) * plane.vLps;
+  }
+  for (Eigen::Index k = 0; k < K; ++k)
+  {
     const Eigen::Index n = (k + 1) % K;
+    const Eigen::Vector3d& d = direction[std::size_t(k)];
+    plane.contourLps.row(k) = (plane.centreLps + plane.outerRadiusMm[k] * d).transpose();
     const double a = wedge * plane.outerRadiusMm[k] * plane.outerRadiusMm[n];
-    const double next = 2 * pi * double(k + 1) / double(K);
-    const Eigen::Vector3d dn = std::cos(next) * plane.uLps + std::sin(next) * plane.vLps;
     area += a;
-    moment += a * (plane.outerRadiusMm[k] * d + plane.outerRadiusMm[n] * dn) / 3.0;
+    moment += a * (plane.outerRadiusMm[k] * d + plane.outerRadiusMm[n] * direction[std::size_t(n)]) / 3.0;
     lumenArea += wedge * std::min(plane.lumenRadiusMm[k], plane.outerRadiusMm[k]) *
                  std::min(plane.lumenRadiusMm[n], plane.outerRadiusMm[n]);
   }
@@ -236,27 +239,27 @@ Centerline OuterWallAxis(const OuterWall& wall, const std::string& name, double 
   const double step = std::max(1e-3, (wall.planes[n - 1].abscissaMm - wall.planes[0].abscissaMm) /
                                        double(std::max<std::size_t>(n - 1, 1)));
   const double lambda = std::pow(halfWindowMm / step, 4.0);
+  const Eigen::Index size = Eigen::Index(n);
   // Pentadiagonal: a sparse LDLᵀ, linear in the planes (a dense one is cubic).
   const auto smooth = [&](const Eigen::VectorXd& weight)
   {
     std::vector<Eigen::Triplet<double>> entries;
-    for (Eigen::Index j = 0; j < Eigen::Index(n); ++j)
+    for (Eigen::Index j = 0; j < size; ++j)
       entries.emplace_back(j, j, weight[j]);
     const double d[3] = { 1.0, -2.0, 1.0 };
-    for (Eigen::Index j = 1; j + 1 < Eigen::Index(n); ++j)
+    for (Eigen::Index j = 1; j + 1 < size; ++j)
       for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c)
           entries.emplace_back(j - 1 + r, j - 1 + c, lambda * d[r] * d[c]);
-    const Eigen::Index size = Eigen::Index(n);
     Eigen::SparseMatrix<double> A(size, size);
     A.setFromTriplets(entries.begin(), entries.end()); // duplicates are summed
-    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(Eigen::Index(n), 3);
+    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(size, 3);
     for (std::size_t i : traced)
       b.row(Eigen::Index(i)) = weight[Eigen::Index(i)] * wall.planes[i].centroidLps.transpose();
     const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
     return Eigen::MatrixXd(solver.solve(b));
   };
-  Eigen::VectorXd weight = Eigen::VectorXd::Zero(Eigen::Index(n));
+  Eigen::VectorXd weight = Eigen::VectorXd::Zero(size);
   for (std::size_t i : traced)
     weight[Eigen::Index(i)] = 1.0;
   const Eigen::MatrixXd first = smooth(weight);
