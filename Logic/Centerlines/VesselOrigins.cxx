@@ -25,6 +25,25 @@ constexpr double SharedLumenRadiusRatio = 1.2;
 /// How far below the skeleton's junction (along the aorta) the axes may meet and still be B, mm:
 /// straight iliacs met 0.3–2.5 mm above it on the phantoms (LandmarksPlanTest, IliacVariants).
 constexpr double belowJunctionToleranceMm = 1.0;
+/// The iliac chord's straight stretch: the distal length it grows from, and how far (mm) a point
+/// may lie off the line fitted to it: the skeleton's points scatter ±0.2 mm about a straight
+/// phantom iliac's axis on 0.6–0.9 mm voxels (3 mm slices included); where the funnel's
+/// centerline leaves the axis it is 1.2 mm off within 3 mm.
+constexpr double StraightSeedMm = 10.0;
+constexpr double StraightToleranceMm = 0.5;
+/// A funnel, where the belowJunctionToleranceMm rule is not applied: the aorta narrows into the
+/// junction (a sac with no distal neck) — its inscribed radius falls by more than
+/// funnelNarrowingPerMm per mm over the funnelSpanMm that end funnelEndMm above the junction (a
+/// distal neck's by ±0.2 mm over it, a half-sine sac's floor by 0.25–1 mm per mm). There the
+/// junction lies up the funnel: 2.3 mm above B on 1.25 mm slices in issue 46's sweep, where the
+/// axes met 0.3 mm from B.
+constexpr double funnelSpanMm = 20.0;
+constexpr double funnelEndMm = 5.0;
+constexpr double funnelNarrowingPerMm = 0.1;
+/// Down a funnel, the junction this far above the axes' first meeting point (along the aorta), mm,
+/// calls for the straight stretches: 2.3 mm on 1.25 mm slices (where the chords met right: 0.3 mm
+/// from B), 6 mm on 3 mm slices (3.8 mm above B) in issue 46's sweep.
+constexpr double junctionAboveBMm = 3.0;
 /// …on scans this fine or finer, mm: on 3 mm slices the junction itself lay 2.5–5.7 mm above B
 /// (15–55 mm common iliacs), and the axes met within 0.3–1.0 mm of B for 20–55 mm ones.
 constexpr double junctionDistalMaxSpacingMm = 1.25;
@@ -115,9 +134,65 @@ double InternalIliacOriginAbscissa(const CenterlineTree& tree, int side)
 namespace
 {
 
+/// A sac that narrows right into the bifurcation (the constants' comment): the skeleton's junction
+/// lies up its funnel, above B.
+bool NarrowsIntoTheJunction(const Centerline& aorta)
+{
+  const double L = aorta.LengthMm();
+  return L > funnelSpanMm + funnelEndMm &&
+         RadiusAt(aorta, L - funnelSpanMm - funnelEndMm) - RadiusAt(aorta, L - funnelEndMm) >
+           funnelNarrowingPerMm * funnelSpanMm;
+}
+
+/// The least-squares line through `c`'s points every 1 mm over [from, to] (its centroid and
+/// principal direction).
+Line FitLine(const Centerline& c, double from, double to)
+{
+  std::vector<Point3> points;
+  for (double s = from; s <= to + 1e-9; s += 1.0)
+    points.push_back(PositionAt(c, s));
+  Point3 centroid = Point3::Zero();
+  for (const Point3& p : points)
+    centroid += p;
+  centroid /= double(points.size());
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  for (const Point3& p : points)
+    scatter += (p - centroid) * (p - centroid).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
+  return { centroid, solver.eigenvectors().col(2).normalized() };
+}
+
+double DistanceToLine(const Point3& p, const Line& line)
+{
+  const Eigen::Vector3d offset = p - line.first;
+  return (offset - offset.dot(line.second) * line.second).norm();
+}
+
+/// Where the straight stretch of `iliac` that ends at `end` begins (arc length, mm): grown up from
+/// its last StraightSeedMm, 1 mm at a time, while the next two points up lie within
+/// StraightToleranceMm of the line fitted to the stretch so far. Where the sac narrows right into
+/// the bifurcation (no distal neck), the skeleton's junction lies up the funnel, 2–10 mm above B, and
+/// the iliac's first 10–15 mm of centerline runs down the funnel's middle before it joins the
+/// iliac's axis: a chord from 10 mm below the junction tilted 6° toward the midline and met 3.8 mm
+/// above B on 3 mm slices (issue 46's sweep).
+double StraightFrom(const Centerline& iliac, double end)
+{
+  double start = std::max(0.0, end - StraightSeedMm);
+  while (start >= 2.0)
+  {
+    const Line line = FitLine(iliac, start, end);
+    if (DistanceToLine(PositionAt(iliac, start - 1.0), line) > StraightToleranceMm &&
+        DistanceToLine(PositionAt(iliac, start - 2.0), line) > StraightToleranceMm)
+      break;
+    start -= 1.0;
+  }
+  return start;
+}
+
 /// The aortic axis and each common iliac's chord (the file comment); the lines found (fewer than
-/// three when an iliac is missing or its chord degenerate).
-std::vector<Line> BifurcationAxes(const CenterlineTree& tree)
+/// three when an iliac is missing or its chord degenerate). `straight`: each iliac's chord starts
+/// no higher than its straight stretch (StraightFrom) and is the line fitted to it.
+std::vector<Line> BifurcationAxes(const CenterlineTree& tree, bool straight)
 {
   const Centerline& aorta = tree.aorta;
   const double L = aorta.LengthMm();
@@ -146,8 +221,10 @@ std::vector<Line> BifurcationAxes(const CenterlineTree& tree)
       while (from < end - 10.0 && RadiusAt(iliac, from) > SharedLumenRadiusRatio * ownRadius)
         from += 0.5;
     }
+    if (straight)
+      from = std::max(from, StraightFrom(iliac, end));
     if ((PositionAt(iliac, end) - PositionAt(iliac, from)).norm() > 1.0)
-      axes.push_back(Chord(iliac, from, end));
+      axes.push_back(straight ? FitLine(iliac, from, end) : Chord(iliac, from, end));
   }
   return axes;
 }
@@ -160,6 +237,7 @@ AorticBifurcation FindAorticBifurcation(const CenterlineTree& tree)
   const double L = aorta.LengthMm();
   const Point3 junction = aorta.points.row(aorta.Size() - 1).transpose();
   const Eigen::Vector3d down = TangentAt(aorta, L);
+  const bool funnel = NarrowsIntoTheJunction(aorta);
   // Where the axes meet, if they meet near the junction and not below it: the junction lies in the
   // merged cross-section, distal to B, so axes meeting more than belowJunctionToleranceMm below it
   // do not run straight up to B (a common iliac that kinks near its start).
@@ -170,7 +248,7 @@ AorticBifurcation FindAorticBifurcation(const CenterlineTree& tree)
     at = NearestToLines(axes);
     const bool thin = tree.largestSpacingMm <= junctionDistalMaxSpacingMm; // false when not known (NaN)
     return at.allFinite() && (at - junction).norm() <= snapMm &&
-           (!thin || (at - junction).dot(down) <= belowJunctionToleranceMm);
+           (!thin || funnel || (at - junction).dot(down) <= belowJunctionToleranceMm);
   };
   AorticBifurcation result;
   if (tree.givenBifurcationLps)
@@ -180,7 +258,17 @@ AorticBifurcation FindAorticBifurcation(const CenterlineTree& tree)
     result.abscissaMm = L + (result.lps - junction).dot(down);
     return result;
   }
-  result.axesMeet = meet(BifurcationAxes(tree), result.lps);
+  result.axesMeet = meet(BifurcationAxes(tree, false), result.lps);
+  // Down a funnel whose junction lies well above the axes' meeting point, the iliac chords 10 mm
+  // below the junction can start on the funnel's centerline (it runs down the funnel's middle
+  // before it joins the iliac's axis: 1.2 mm off it 11 mm down on 3 mm slices, the chords leaning
+  // 6° and meeting 3.8 mm above B): once more on each iliac's straight stretch. Not where the
+  // junction lies near or below B (a 0.625 mm funnel whose junction lay 8 mm below B: the fitted
+  // lines, on stretches that differ by a millimetre, moved B 0.7 mm up its 1.5 mm-per-mm floor).
+  Point3 again;
+  if (funnel && result.axesMeet && (junction - result.lps).dot(down) < -junctionAboveBMm &&
+      meet(BifurcationAxes(tree, true), again))
+    result.lps = again;
   // (Chords over the iliacs' first 7 mm from the junction, before a kink 10 mm below B, met at
   // the junction too: the skeleton runs down the middle of the merged cross-section there. The
   // junction it is: 2.7–3.0 mm below B on those phantoms.)

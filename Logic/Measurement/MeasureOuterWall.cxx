@@ -154,6 +154,44 @@ void RequireCovered(Measurement& m, const OuterWall& vessel, double fromMm, doub
   }
 }
 
+/// (d) on a sac that narrows right into the bifurcation: its narrowest level is B itself, and the
+/// wall's last plane lies up to a step above it, where the funnel widens by up to 2.2 mm of
+/// diameter per mm (a 75 mm sac over 80 mm into an 18 mm bifurcation: 20.4 mm read for 18, 0.7 mm
+/// above B). When `narrowest` is the lowest plane that counts, lies above B's level and the plane
+/// before it (within 1.5 steps) is wider, `value` becomes the line through the two extrapolated
+/// down to B's level (never more than 1.5 steps: the planes lie a step apart along the centerline,
+/// which leans off the distal direction and ends short of B — 1.05 mm above it on a 1.25 mm funnel
+/// in FlowDividerPlanTest); returns whether it did.
+template<typename Counts>
+bool ExtrapolateToB(const OuterWall& aorta,
+                    double stepMm,
+                    const OuterWallPlane& narrowest,
+                    const OuterWallLevels& levels,
+                    const Counts& counts,
+                    double& value)
+{
+  const auto height = [&](const OuterWallPlane& p)
+  { return -(p.centreLps - levels.bifurcationLps).dot(levels.distalDirection); };
+  const OuterWallPlane* above = nullptr;
+  for (const OuterWallPlane& p : aorta.planes)
+  {
+    if (!p.Usable() || !counts(p))
+      continue;
+    if (p.abscissaMm > narrowest.abscissaMm + 1e-9)
+      return false; // not the lowest
+    if (p.abscissaMm < narrowest.abscissaMm - 1e-9 && p.abscissaMm >= narrowest.abscissaMm - 1.5 * stepMm)
+      above = &p;
+  }
+  const double h = height(narrowest);
+  if (!above || h <= 0.0 || h > 1.5 * stepMm)
+    return false;
+  const double rise = height(*above) - h, widening = above->areaDiameterMm - narrowest.areaDiameterMm;
+  if (rise <= 0.0 || widening <= 0.0)
+    return false;
+  value = narrowest.areaDiameterMm - h * widening / rise;
+  return true;
+}
+
 } // namespace
 
 Point3 OuterAxisPoint(const VesselWall* wall, const Centerline& aorta, double s)
@@ -227,13 +265,18 @@ void MeasureOuterWall(const VesselWall& wall, const OuterWallLevels& levels, Mea
     if (widest && p.abscissaMm >= widest->abscissaMm && p.abscissaMm <= dEndMm + 1e-9 && p.Usable() && counts(p) &&
         (!narrowest || p.areaDiameterMm < narrowest->areaDiameterMm))
       narrowest = &p;
-  out.values.push_back(
-    OuterDiameter("distalNeckMinDiameter", narrowest, narrowest ? narrowest->areaDiameterMm : nan,
-                  narrowest ? narrowest->supportedFraction : 0.0, "aorta", narrowest ? narrowest->abscissaMm : dEndMm,
-                  toBifurcation ? "(d) smallest area-equivalent diameter between (c) and the aortic bifurcation (the "
-                                  "wall still narrows at the trunk's last ring)"
-                                : "(d) smallest area-equivalent diameter between (c) and the trunk's last ring",
-                  out));
+  double dOuter = narrowest ? narrowest->areaDiameterMm : nan;
+  bool extrapolated = false;
+  if (toBifurcation && narrowest)
+    extrapolated = ExtrapolateToB(aorta, step, *narrowest, levels, counts, dOuter);
+  out.values.push_back(OuterDiameter(
+    "distalNeckMinDiameter", narrowest, dOuter, narrowest ? narrowest->supportedFraction : 0.0, "aorta",
+    narrowest ? narrowest->abscissaMm : dEndMm,
+    toBifurcation ? std::string("(d) smallest area-equivalent diameter between (c) and the aortic bifurcation (the "
+                                "wall still narrows at the trunk's last ring") +
+                      (extrapolated ? "; extrapolated to B's level from the last two planes above it)" : ")")
+                  : std::string("(d) smallest area-equivalent diameter between (c) and the trunk's last ring"),
+    out));
   if (widest)
     RequireCovered(out.values.back(), aorta, widest->abscissaMm, dEndMm, out);
   for (int side = 0; side < 2; ++side)

@@ -1,7 +1,9 @@
 // Tests of the synthetic phantom: its labels and intensities agree with its analytic geometry
 // on any grid, and its truth is what the sizing definitions say.
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 
 #include <gtest/gtest.h>
 #include <itkImageRegionIteratorWithIndex.h>
@@ -181,6 +183,50 @@ TEST(AorticPhantom, NeckAngle_NeckAxisLeansAnteriorlyByBeta)
   const Point3 onNeck = bend + 40.0 * neck, straight = bend + Point3(0, 0, 40.0);
   EXPECT_EQ(LabelAt(phantom, onNeck), LumenLabel);
   EXPECT_EQ(LabelAt(phantom, straight), TissueLabel); // 40·sin 40° = 26 mm from the neck's axis
+}
+
+/// (d)'s truth on a sac that narrows straight into B over iliacs wider than the distal aorta (issue
+/// 46's sweep: 17.1 mm iliacs on a 15 mm distal aorta). Each iliac's tube starts at B with a round
+/// end, so at a level h above B the lumen's section holds the aorta's disc of radius r(h) and the
+/// cap's of √(ri² − h²), both centred on the axis: no section is narrower than the larger of the
+/// two, whatever else the tubes add — a lower bound read off the radius profile alone, which the
+/// profile's own minimum (15 mm at B) breaks by 2 mm. With iliacs narrower than the aorta at B the
+/// caps lie inside its disc and the truth is the profile's minimum, exactly.
+TEST(AorticPhantom, DistalNeckTruth_IliacCapsWiderThanTheAortaAtB)
+{
+  PhantomParams p;
+  p.maxAneurysmDiameterMm = 58.0;
+  p.aneurysmLengthMm = 77.0;
+  p.distalNeckLengthMm = 0.0;
+  p.distalNeckDiameterMm = 15.0;
+  p.rightIliacDiameterMm = 17.0;
+  p.leftIliacDiameterMm = 12.0;
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  const PhantomSizing& wide = phantom.truth.sizing;
+  const PhantomVessel& aorta = phantom.truth.vessels.front();
+  // r(h): the aorta's radius samples (every 1 mm of its axis, B its last point), interpolated.
+  const auto radiusAt = [&](double h)
+  {
+    for (Eigen::Index k = aorta.axis.rows() - 1; k > 0; --k)
+    {
+      const double z0 = aorta.axis(k, 2), z1 = aorta.axis(k - 1, 2);
+      if (h >= z0 && h <= z1)
+        return aorta.radiusMm[k] + (h - z0) / (z1 - z0) * (aorta.radiusMm[k - 1] - aorta.radiusMm[k]);
+    }
+    return aorta.radiusMm[aorta.axis.rows() - 1];
+  };
+  const double cap = 8.5; // the right iliac's radius
+  double bound = 1e9;
+  for (double h = 0.0; h <= 30.0; h += 0.01)
+    bound = std::min(bound, 2.0 * std::max(radiusAt(h), std::sqrt(std::max(0.0, cap * cap - h * h))));
+  std::cout << "(d) truth " << wide.distalNeckMinDiameter << " mm, the discs' bound " << bound << " mm\n";
+  // 0.05 mm: the radius samples' linear interpolation on the funnel's curve, and the truth's
+  // bisection of each ray (0.1 µm) and its 0.1 mm levels.
+  EXPECT_GE(wide.distalNeckMinDiameter, bound - 0.05);
+  EXPECT_GT(wide.distalNeckMinDiameter, 15.0 + 1.0);
+  p.rightIliacDiameterMm = 12.0;
+  p.leftIliacDiameterMm = 11.0;
+  EXPECT_DOUBLE_EQ(GenerateAorticPhantom(p).truth.sizing.distalNeckMinDiameter, 15.0);
 }
 
 TEST(AorticPhantom, NeckBend_BTruthIsTheNarrowestSectionNearTheKink)
