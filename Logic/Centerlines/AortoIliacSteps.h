@@ -98,7 +98,10 @@ double ReachableLength(const SkeletonGraph& graph, int edge, int node);
 /// See SkeletonPaths.cxx.
 double PathLength(const std::vector<Point3>& points);
 
-/// Follows the vessel: at each junction the branch scoring best on radius × (1 + cos turn)/2.
+/// Follows the vessel: at each junction the branch scoring best on radius × (1 + cos turn)/2,
+/// among those that lead to an end the path has not passed; the others that do, and those closed
+/// off in a loop of their own (touching neither the path nor `blocked`), are the junction's side
+/// edges; a way back into the path is neither.
 VesselPath FollowVessel(const SkeletonGraph& graph, int start, int firstEdge, std::set<int> blocked, double reach);
 
 /// Longest shortest-path distance in the graph, by two Dijkstra sweeps (exact on a tree).

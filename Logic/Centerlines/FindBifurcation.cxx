@@ -36,6 +36,11 @@ bool AtInferiorBorder(const SkeletonGraph& graph, int node)
   return end.atBorder && end.position.z() - graph.scanLowestZMm <= end.radiusMm + 3.0;
 }
 
+/// A lower limb at least this share of the upper branch's radius, with another Y below it, is
+/// the aorta running on (FindBifurcations); the same share as the rule that the upper branch is at
+/// least 0.8 × the wider lower one.
+constexpr double AortaRunsOnShare = 0.8;
+
 } // namespace
 
 std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph,
@@ -62,7 +67,9 @@ std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph,
     {
       if (up.direction.z() <= 0.5 || up.length < params.minimumBranchLengthMm)
         continue;
-      double aortaRadius = -1.0; // median along the vessel followed up, computed when needed
+      // The median radius along the vessel followed up: the whole aorta, not the sac or the
+      // funnel the junction may lie in.
+      const double aortaRadius = Median(FollowVessel(graph, n, up.edge, {}, params.directionReachMm).radii);
       for (const Branch& right : branches)
         for (const Branch& left : branches)
         {
@@ -71,8 +78,11 @@ std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph,
           // directions are compared with each other rather than with the x axis.
           const bool sides = left.direction.x() - right.direction.x() > 0.3;
           // The iliacs are narrower than the aorta, but not much: this also rejects the arch in
-          // a chest scan, whose two limbs go down under a narrow supra-aortic branch.
-          const double minimum = params.minimumIliacRadiusRatio * up.radius;
+          // a chest scan, whose two limbs go down under a narrow supra-aortic branch. The
+          // narrowest iliac is compared with the narrower of the aorta's radius at the junction
+          // and its median: a junction in a sac's floor or a funnel has the sac's radius there
+          // (15 mm over a 4.4 mm iliac lumen, a ratio of 0.15), the aorta's median is its own.
+          const double minimum = params.minimumIliacRadiusRatio * std::min(up.radius, aortaRadius);
           const bool wide =
             right.radius >= minimum && left.radius >= minimum && up.radius >= 0.8 * std::max(right.radius, left.radius);
           if (!(lower && sides && wide))
@@ -131,8 +141,6 @@ std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph,
           // centimetres: a common iliac aneurysm may be wider than the aorta just above it, never
           // the iliac over its length (the external iliac is most of it). Only "narrower": a
           // small aorta (18 mm) over ectatic iliacs (16–17 mm) is a real Y.
-          if (aortaRadius < 0.0)
-            aortaRadius = Median(FollowVessel(graph, n, up.edge, {}, params.directionReachMm).radii);
           const double iliacRadius = std::max(Median(rightPath.radii), Median(leftPath.radii));
           if (aortaRadius < params.minimumAortaToIliacRatio * iliacRadius)
           {
@@ -174,6 +182,39 @@ std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph,
         }
     }
   }
+  // A Y with another Y below it on a lower limb that is as wide as the vessel above (at least
+  // AortaRunsOnShare of it) is the aorta running on down to its bifurcation with a branch leaving
+  // it — the superior mesenteric running down in front of it scored 3.4 mm where the real Y's
+  // narrower iliac (a 4.6 mm lumen) scored 2.2 — not the bifurcation: the aorta does not divide
+  // twice. Judged over every candidate, partial ones too, so that the real Y cut by the scan's
+  // border still removes the one above it.
+  std::vector<Bifurcation> kept;
+  for (const Bifurcation& a : found)
+  {
+    int below = -1;
+    const double upRadius = BranchRadius(graph, a.up, a.node, params.directionReachMm);
+    for (const int edge : { a.right, a.left })
+    {
+      if (BranchRadius(graph, edge, a.node, params.directionReachMm) < AortaRunsOnShare * upRadius)
+        continue;
+      const VesselPath path = FollowVessel(graph, a.node, edge, {}, params.directionReachMm);
+      for (const Bifurcation& b : found)
+        if (b.node != a.node && std::find(path.nodes.begin() + 1, path.nodes.end(), b.node) != path.nodes.end())
+          below = b.node;
+    }
+    if (below < 0)
+    {
+      kept.push_back(a);
+      continue;
+    }
+    refused.push_back({ a.node, a.score,
+                        "the junction at " + FormatPoint(graph.nodes[a.node].position) +
+                          " mm LPS has the shape of a Y, but a lower limb as wide as the vessel above it runs on to "
+                          "another Y at " +
+                          FormatPoint(graph.nodes[below].position) +
+                          " mm LPS: the aorta running on with a branch leaving it, not its bifurcation" });
+  }
+  found.swap(kept);
   // A partial Y only where the scan holds no whole one.
   if (std::any_of(found.begin(), found.end(), [](const Bifurcation& b) { return !b.Partial(); }))
     found.erase(std::remove_if(found.begin(), found.end(), [](const Bifurcation& b) { return b.Partial(); }),

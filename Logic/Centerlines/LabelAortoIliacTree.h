@@ -13,7 +13,8 @@
 ///    followed as a vessel (step 2), ending at least `minimumIliacDescentMm` below the junction
 ///    (which rules out junctions in the chest whose lower limbs are short branches), the two
 ///    lower ones at
-///    least `minimumIliacRadiusRatio` × the upper one's radius and the upper one at least 0.8 ×
+///    least `minimumIliacRadiusRatio` × the upper one's radius (or the aorta's median radius
+///    followed up, if narrower: a junction in a sac's floor has the sac's) and the upper one at least 0.8 ×
 ///    the wider lower one's (which rules out the arch of a chest scan), the aorta followed up
 ///    (step 2) at least `minimumAortaToIliacRatio` × as wide as each iliac followed down (median
 ///    radius over the whole vessels), and no lower limb giving off an anterior branch (y < −0.6)
@@ -27,7 +28,9 @@
 ///    must part (LimbDivergence.h): two that run on side by side, a septum apart — the true and
 ///    false lumens of a dissection — are refused; and two that meet again (followed down, they
 ///    pass a common node: the skeleton looping round a plaque's blurred end grown into the lumen)
-///    are one vessel, not two, and refused too.
+///    are one vessel, not two, and refused too. A Y with another Y below it on a lower limb at
+///    least 0.8 × as wide as its upper branch is the aorta running on with a branch leaving it
+///    (the superior mesenteric running down in front of the aorta), not the bifurcation.
 ///    **A partial Y** — only where the scan holds no whole one — is a junction of that shape whose
 ///    lower limb(s) fall short of `minimumIliacLengthMm` or `minimumIliacDescentMm` because the
 ///    scan's inferior border cuts them (the vessel followed ends at the border: its inscribed
@@ -39,7 +42,9 @@
 /// 2. **The aorta** is followed upward from it, at each junction into the widest branch that
 ///    continues the direction (score: radius × (1 + cos of the turn)/2), among the branches that
 ///    reach an end not yet passed (a loop in the skeleton, a tunnel through a sac, leads only
-///    back into the path and would end the aorta in the sac), to an end; if the
+///    back into the path and would end the aorta in the sac), to an end; a branch that reaches
+///    no end but touches nothing else either (it ends in a loop of its own: a ring at a renal's
+///    tip) is a side branch there, never the way on; if the
 ///    path passes over a top (the arch in a chest scan) and comes down again by more than
 ///    `minimumBranchLengthMm`, the part after the top is the side branch `ascendingAorta`.
 ///    The aorta runs from its top down to the bifurcation.

@@ -41,24 +41,40 @@ int WidestContinuation(const SkeletonGraph& graph, int node, int incoming, doubl
 /// the renal axis of ProximalSite.h, which starts 1 mm outside the wall).
 constexpr double outsideParentStartMm = 1.0;
 
-/// True when an end point (degree 1) can be reached through `edge` from `node` without passing
-/// `node` or a node of `blocked`.
-bool LeadsToANewEnd(const SkeletonGraph& graph, int node, int edge, const std::set<int>& blocked)
+/// Where `edge` leads from `node`, never passing `node` or a node of `blocked`: to an end point
+/// (degree 1) the path has not passed; or, reaching none, to nothing but itself — a branch that
+/// ends in a loop of the skeleton (a one-voxel hole in a thin renal's blurred lumen made a ring at
+/// its tip, and the renal was dropped as a way back into the path); or back into the path.
+enum class WayOn
 {
-  std::set<int> seen{ node };
+  NewEnd,
+  ClosedOff,
+  BackIntoPath
+};
+
+WayOn FollowWayOn(const SkeletonGraph& graph, int node, int edge, const std::set<int>& blocked)
+{
+  std::set<int> seen;
   std::vector<int> stack{ graph.Other(edge, node) };
+  bool touches = false;
   while (!stack.empty())
   {
     const int n = stack.back();
     stack.pop_back();
-    if (blocked.count(n) || !seen.insert(n).second)
+    if (n == node || blocked.count(n))
+    {
+      touches = true; // back at the junction, or into the path
+      continue;
+    }
+    if (!seen.insert(n).second)
       continue;
     if (graph.Degree(n) == 1)
-      return true;
+      return WayOn::NewEnd;
     for (int e : graph.nodes[n].edges)
-      stack.push_back(graph.Other(e, n));
+      if (e != edge) // not back the way in
+        stack.push_back(graph.Other(e, n));
   }
-  return false;
+  return touches ? WayOn::BackIntoPath : WayOn::ClosedOff;
 }
 
 } // namespace
@@ -192,10 +208,17 @@ VesselPath FollowVessel(const SkeletonGraph& graph, int start, int firstEdge, st
     path.nodes.push_back(node);
     // Ways on that reach an end the path has not passed: a loop in the skeleton (a tunnel through
     // a sac) leads only back into the path, and taken, it ended the aorta in the sac.
-    std::vector<int> options;
+    // A branch closed off in a loop is a side branch, never the way on.
+    std::vector<int> options, closedOff;
     for (int e : graph.nodes[node].edges)
-      if (e != incoming && graph.edges[e].a != graph.edges[e].b && LeadsToANewEnd(graph, node, e, blocked))
-        options.push_back(e);
+      if (e != incoming && graph.edges[e].a != graph.edges[e].b)
+      {
+        const WayOn way = FollowWayOn(graph, node, e, blocked);
+        if (way == WayOn::NewEnd)
+          options.push_back(e);
+        else if (way == WayOn::ClosedOff)
+          closedOff.push_back(e);
+      }
     if (options.empty())
       break;
     // Incoming direction over the last `reach` mm.
@@ -216,7 +239,7 @@ VesselPath FollowVessel(const SkeletonGraph& graph, int start, int firstEdge, st
       if (score > bestScore)
         best = e, bestScore = score;
     }
-    VesselPath::Junction junction{ node, PathLength(path.points), {} };
+    VesselPath::Junction junction{ node, PathLength(path.points), closedOff };
     for (int e : options)
       if (e != best)
         junction.sideEdges.push_back(e);

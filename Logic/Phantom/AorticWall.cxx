@@ -180,9 +180,16 @@ double AorticWall::ThrombusThickness(double h) const
   return m_NeckThrombusMm * Taper(h);
 }
 
+bool AorticWall::ConcentricAt(double h) const
+{
+  // The neck's thrombus is a crescent whatever the sac's shape: drawn concentric, a 6 mm neck
+  // thrombus was a ring closing a 19 mm neck to 8 mm, a stenosis no neck has.
+  return m_Concentric && h >= m_SacBottom && h <= m_SacTop && m_SacThrombusMm > 0.0;
+}
+
 Eigen::Vector2d AorticWall::LumenCentre(double h) const
 {
-  if (m_Concentric)
+  if (ConcentricAt(h))
     return Eigen::Vector2d::Zero();
   const double side = h <= m_SacTop ? m_SacThrombusSideDeg : m_NeckThrombusSideDeg;
   return -0.5 * ThrombusThickness(h) * SideVector(side);
@@ -190,7 +197,7 @@ Eigen::Vector2d AorticWall::LumenCentre(double h) const
 
 double AorticWall::LumenRadius(double h) const
 {
-  return InnerRadius(h) - (m_Concentric ? 1.0 : 0.5) * ThrombusThickness(h);
+  return InnerRadius(h) - (ConcentricAt(h) ? 1.0 : 0.5) * ThrombusThickness(h);
 }
 
 double AorticWall::ThrombusThicknessAt(double h, double thetaDeg) const

@@ -22,7 +22,8 @@
 ///    ends; 0 elsewhere. Its side is the ILT's thick side;
 ///  - lumen: a disc of radius rl in the plane, centred e from the axis away from the thick side:
 ///    eccentric rl = Ri − T/2, e = T/2 (the thrombus is a crescent, T thick on its side, 0 opposite);
-///    concentric rl = Ri − T, e = 0. The lumen is a tube around the curve A(h) + e(h)·(−side), so
+///    concentric rl = Ri − T, e = 0 (in the sac only: the neck's thrombus is always a crescent).
+///    The lumen is a tube around the curve A(h) + e(h)·(−side), so
 ///    its cross-section ⊥ its own centerline is the disc rl exactly;
 ///  - calcification: an arc of `…CalcificationArcDeg` centred on its side, radially from Ri − 1 mm
 ///    to Ro (intimal calcium at the outer wall under the ILT), in the neck from the proximal site
@@ -102,6 +103,8 @@ public:
   /// The largest caliper of the outer cross-section over h in [fromH, toH] (0.01 mm steps), mm.
   double MaxCaliperMm(double fromH, double toH) const;
   double ThrombusThickness(double h) const;
+  /// Whether the thrombus at level h is concentric: the sac's, when thrombusConcentric.
+  bool ConcentricAt(double h) const;
   /// The lumen disc at h: its centre in the plane (anterior, left) and its radius.
   Eigen::Vector2d LumenCentre(double h) const;
   /// The same centre in LPS: the axis point at h moved by LumenCentre in the plane's frame.

@@ -172,6 +172,29 @@ TEST(AorticWallPhantom, ConcentricThrombus_RingAllRound)
   EXPECT_NEAR(phantom.truth.seedLps.y(), 0.0, 1e-9);
 }
 
+TEST(AorticWallPhantom, ConcentricSacThrombus_NeckThrombusStillACrescent)
+{
+  // A concentric sac thrombus made the neck's crescent a ring too: 6 mm all round closed the
+  // neck's 19 mm lumen to 7 mm over its stretch (the random-anatomy sweep's seed 146 #38, whose
+  // skeleton then left the aorta there). The neck's thrombus is a crescent whatever the sac's.
+  PhantomParams p = WallParams();
+  p.thrombusMaxThicknessMm = 10.0;
+  p.thrombusConcentric = true;
+  p.neckThrombusThicknessMm = 6.0;
+  p.neckThrombusLengthMm = 30.0;
+  p.neckThrombusSide = PhantomSide::Left;
+  const AorticPhantom phantom = GenerateAorticPhantom(p);
+  const double site = phantom.truth.sizing.proximalSiteToBifurcationLength, ri = 12.5 - 1.5;
+  // 5 mm below the site the crescent is at full thickness (its tapers are 3 mm): thrombus on the
+  // left 1 mm inside the wall, lumen on the right 1 mm inside it (a ring would put thrombus there).
+  EXPECT_EQ(LabelAt(phantom, InPlane(site - 5.0, 90.0, ri - 1.0)), ThrombusLabel);
+  EXPECT_EQ(LabelAt(phantom, InPlane(site - 5.0, 270.0, ri - 1.0)), LumenLabel);
+  // The sac's stays a ring (as ConcentricThrombus_RingAllRound).
+  const double z = 60.0, sac = 0.5 * phantom.truth.sizing.outerMaxAneurysmDiameter - 1.5;
+  for (const double theta : { 90.0, 270.0 })
+    EXPECT_EQ(LabelAt(phantom, InPlane(z, theta, sac - 9.0)), ThrombusLabel) << theta;
+}
+
 TEST(AorticWallPhantom, NeckThrombusAndCalcification_ArcsInTheTruth)
 {
   PhantomParams p = WallParams();
