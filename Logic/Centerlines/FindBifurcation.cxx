@@ -67,9 +67,15 @@ std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph,
     {
       if (up.direction.z() <= 0.5 || up.length < params.minimumBranchLengthMm)
         continue;
-      // The median radius along the vessel followed up: the whole aorta, not the sac or the
-      // funnel the junction may lie in.
-      const double aortaRadius = Median(FollowVessel(graph, n, up.edge, {}, params.directionReachMm).radii);
+      // The median radius along the vessel followed up — the whole aorta, not the sac or the
+      // funnel the junction may lie in — computed when a rule needs it.
+      double aortaMedian = -1.0;
+      const auto aortaRadius = [&]
+      {
+        if (aortaMedian < 0.0)
+          aortaMedian = Median(FollowVessel(graph, n, up.edge, {}, params.directionReachMm).radii);
+        return aortaMedian;
+      };
       for (const Branch& right : branches)
         for (const Branch& left : branches)
         {
@@ -82,10 +88,11 @@ std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph,
           // narrowest iliac is compared with the narrower of the aorta's radius at the junction
           // and its median: a junction in a sac's floor or a funnel has the sac's radius there
           // (15 mm over a 4.4 mm iliac lumen, a ratio of 0.15), the aorta's median is its own.
-          const double minimum = params.minimumIliacRadiusRatio * std::min(up.radius, aortaRadius);
-          const bool wide =
-            right.radius >= minimum && left.radius >= minimum && up.radius >= 0.8 * std::max(right.radius, left.radius);
-          if (!(lower && sides && wide))
+          if (!(lower && sides && up.radius >= 0.8 * std::max(right.radius, left.radius)))
+            continue;
+          const double narrower = std::min(right.radius, left.radius);
+          if (narrower < params.minimumIliacRadiusRatio * up.radius &&
+              narrower < params.minimumIliacRadiusRatio * aortaRadius())
             continue;
           const VesselPath rightPath = FollowVessel(graph, n, right.edge, {}, params.directionReachMm);
           const VesselPath leftPath = FollowVessel(graph, n, left.edge, {}, params.directionReachMm);
@@ -142,10 +149,10 @@ std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph,
           // the iliac over its length (the external iliac is most of it). Only "narrower": a
           // small aorta (18 mm) over ectatic iliacs (16–17 mm) is a real Y.
           const double iliacRadius = std::max(Median(rightPath.radii), Median(leftPath.radii));
-          if (aortaRadius < params.minimumAortaToIliacRatio * iliacRadius)
+          if (aortaRadius() < params.minimumAortaToIliacRatio * iliacRadius)
           {
             refused.push_back({ n, score,
-                                where + "the vessel above it (median " + FormatNumber(2.0 * aortaRadius, 1) +
+                                where + "the vessel above it (median " + FormatNumber(2.0 * aortaRadius(), 1) +
                                   " mm across) is narrower than one below (" + FormatNumber(2.0 * iliacRadius, 1) +
                                   " mm): large vessels meeting, not the aorta and its iliacs" });
             continue;

@@ -3,14 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 #include <vector>
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include "Common/Errors.h"
 #include "Common/Format.h"
 #include "Common/Median.h"
+#include "Common/PrincipalLine.h"
 #include "Common/SampleCt.h"
 #include "Segmentation/LumenGrowthSteps.h"
 
@@ -72,21 +73,14 @@ AxisLine FitAxisLine(const Centerline& parent, double s, double halfWidthMm)
   for (const Eigen::Index i : near)
     radii.push_back(parent.radiusMm[i]);
   line.radiusMm = Median(radii);
+  std::vector<Point3> points;
   for (const Eigen::Index i : near)
   {
-    line.centroid += parent.points.row(i).transpose();
+    points.push_back(parent.points.row(i).transpose());
     line.abscissaMm += parent.abscissaMm[i];
   }
-  line.centroid /= double(near.size());
   line.abscissaMm /= double(near.size());
-  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-  for (const Eigen::Index i : near)
-  {
-    const Eigen::Vector3d d = parent.points.row(i).transpose() - line.centroid;
-    scatter += d * d.transpose();
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
-  line.direction = eigen.eigenvectors().col(2).normalized(); // the largest eigenvalue's
+  std::tie(line.centroid, line.direction) = PrincipalLine(points);
   const Eigen::Vector3d downstream = parent.points.row(near.back()) - parent.points.row(near.front());
   if (line.direction.dot(downstream) < 0.0)
     line.direction = -line.direction;

@@ -10,6 +10,7 @@
 #include <Eigen/Dense>
 
 #include "Common/Median.h"
+#include "Common/PrincipalLine.h"
 
 namespace sgp
 {
@@ -151,15 +152,7 @@ Line FitLine(const Centerline& c, double from, double to)
   std::vector<Point3> points;
   for (double s = from; s <= to + 1e-9; s += 1.0)
     points.push_back(PositionAt(c, s));
-  Point3 centroid = Point3::Zero();
-  for (const Point3& p : points)
-    centroid += p;
-  centroid /= double(points.size());
-  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-  for (const Point3& p : points)
-    scatter += (p - centroid) * (p - centroid).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
-  return { centroid, solver.eigenvectors().col(2).normalized() };
+  return PrincipalLine(points);
 }
 
 double DistanceToLine(const Point3& p, const Line& line)
