@@ -31,6 +31,10 @@ struct VesselPath
   };
   std::vector<Junction> junctions;
   std::vector<int> nodes; ///< every node passed, the start included
+  /// It ran back into the path it left or into `blocked` — its first edge leads straight there, or
+  /// it ended where every way on leads back (not at an end point, nor closed off in a loop of its
+  /// own): the other strand of a loop along a vessel, not a vessel of its own.
+  bool runsBack = false;
 };
 
 struct Bifurcation

@@ -41,6 +41,21 @@ bool AtInferiorBorder(const SkeletonGraph& graph, int node)
 /// least 0.8 × the wider lower one.
 constexpr double AortaRunsOnShare = 0.8;
 
+/// How far past its junction's inscribed sphere a side branch must reach to be a vessel leaving
+/// (the visceral rule of FindBifurcations), mm: as a branch stub's end (SkeletonGraph.h).
+constexpr double VisceralBeyondJunctionMm = 5.0;
+
+/// Whether the vessel followed from `node` along `edge` reaches VisceralBeyondJunctionMm past the
+/// node's inscribed sphere.
+bool ReachesBeyond(const SkeletonGraph& graph, int node, int edge, double reach)
+{
+  const Point3& centre = graph.nodes[node].position;
+  const double sphere = graph.nodes[node].radiusMm + VisceralBeyondJunctionMm;
+  const VesselPath path = FollowVessel(graph, node, edge, {}, reach);
+  return std::any_of(path.points.begin(), path.points.end(),
+                     [&](const Point3& p) { return (p - centre).norm() > sphere; });
+}
+
 } // namespace
 
 std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph,
@@ -163,13 +178,17 @@ std::vector<Bifurcation> FindBifurcations(const SkeletonGraph& graph,
           // inferior epigastric and the superficial circumflex, are under 1.5 mm) is the aorta
           // below a junction of the aorta with other large vessels (the heart), and the scan may
           // end above the real bifurcation.
+          // (A branch is a vessel leaving: its skeleton reaches VisceralBeyondJunctionMm past the
+          // junction's inscribed sphere. A strand inside a 14 mm iliac's own sphere, 2 mm from the
+          // junction with 6.5 mm of radius there, refused the real Y: the sweep's seed 246 #45.)
           std::string visceral;
           for (const auto* path : { &rightPath, &leftPath })
             for (const auto& junction : path->junctions)
               for (int e : junction.sideEdges)
                 if (visceral.empty() && BranchDirection(graph, e, junction.node, params.directionReachMm).y() < -0.6 &&
                     BranchRadius(graph, e, junction.node, params.directionReachMm) >= params.visceralRadiusMm &&
-                    ReachableLength(graph, e, junction.node) >= params.minimumBranchLengthMm / 2)
+                    ReachableLength(graph, e, junction.node) >= params.minimumBranchLengthMm / 2 &&
+                    ReachesBeyond(graph, junction.node, e, params.directionReachMm))
                   visceral = FormatPoint(graph.nodes[junction.node].position);
           if (!visceral.empty())
           {

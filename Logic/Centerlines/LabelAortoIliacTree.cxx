@@ -186,8 +186,13 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
       {
         const VesselPath branch =
           FollowVessel(graph, junction.node, e, std::set<int>(path.nodes.begin(), path.nodes.end()), reach);
-        if (std::any_of(branch.nodes.begin() + 1, branch.nodes.end(), [&](int n) { return elsewhere.count(n) > 0; }))
-          continue; // a loop into the other iliac or the aorta
+        // A way that runs back into this iliac is the other strand of a loop along it — a thin
+        // strand past a hole in the crotch's blurred lumen, 10 mm below the bifurcation, became the
+        // internal iliac and left the limb no room (the sweep's seed 246 #17: (f) read on the
+        // bifurcation's flare, 12.0 mm for 7.2).
+        if (branch.runsBack ||
+            std::any_of(branch.nodes.begin() + 1, branch.nodes.end(), [&](int n) { return elsewhere.count(n) > 0; }))
+          continue; // a loop along this iliac, into the other iliac or into the aorta
         const bool internal =
           !internalFound && ReachableLength(graph, e, junction.node) >= params.minimumBranchLengthMm / 2 &&
           BranchRadius(graph, e, junction.node, reach) >= params.internalIliacRadiusRatio * commonRadius;
@@ -211,6 +216,13 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
     {
       SideBranch side{ FollowVessel(graph, junction.node, e, mainNodes, reach), junction.node,
                        BranchDirection(graph, e, junction.node, reach), BranchRadius(graph, e, junction.node, reach) };
+      // A strand that wanders through the sac's skeleton and ends where every way leads back into
+      // the aorta is part of a loop in the sac (a tunnel beside a thrombus, the dome under an angled
+      // neck), not a vessel: two such strands were named the superior mesenteric and a renal, 40 mm
+      // below the real renals (the sweep's seed 246 #35: (b) read on the neck's thrombus, 23.1 for
+      // 17.4 mm).
+      if (side.path.runsBack)
+        continue;
       side.direction = DirectionOutsideParent(side.path.points, tree.aorta, reach, side.direction);
       side.offset = OffsetOutsideParent(side.path.points, tree.aorta);
       if (junction.abscissa > topAbscissa + 1e-6)

@@ -42,9 +42,10 @@ int WidestContinuation(const SkeletonGraph& graph, int node, int incoming, doubl
 constexpr double outsideParentStartMm = 1.0;
 
 /// Where `edge` leads from `node`, never passing `node` or a node of `blocked`: to an end point
-/// (degree 1) the path has not passed; or, reaching none, to nothing but itself — a branch that
-/// ends in a loop of the skeleton (a one-voxel hole in a thin renal's blurred lumen made a ring at
-/// its tip, and the renal was dropped as a way back into the path); or back into the path.
+/// (degree 1) the path has not passed; or, reaching none, to nothing but itself and `node` — a
+/// branch that ends in a loop of the skeleton (a one-voxel hole in a thin renal's blurred lumen
+/// made a ring at its tip, and the renal was dropped as a way back into the path); or back into
+/// the path (a node of `blocked` other than `node`).
 enum class WayOn
 {
   NewEnd,
@@ -61,9 +62,11 @@ WayOn FollowWayOn(const SkeletonGraph& graph, int node, int edge, const std::set
   {
     const int n = stack.back();
     stack.pop_back();
-    if (n == node || blocked.count(n))
+    if (n == node)
+      continue; // back at the junction only: a loop of its own
+    if (blocked.count(n))
     {
-      touches = true; // back at the junction, or into the path
+      touches = true; // into the path
       continue;
     }
     if (!seen.insert(n).second)
@@ -80,22 +83,41 @@ WayOn FollowWayOn(const SkeletonGraph& graph, int node, int edge, const std::set
 } // namespace
 
 /// Median radius of `edge` leaving `node`, beyond the junction's own radius (where the
-/// inscribed sphere still touches the parent vessel) and within `reach` mm after it.
+/// inscribed sphere still touches the parent vessel) and within `reach` mm after it. An edge that
+/// ends inside that sphere is followed on through the widest way (by its own edges' median radii)
+/// until the window starts: a sac's dome thins into a spur whose first edge, a few mm long, lies
+/// in the sac's sphere and carried the sac's radius, so a blind spur 1–2 mm wide beyond it
+/// outscored the neck it sat beside (a 58° neck narrowed by thrombus was left for the spur).
 double BranchRadius(const SkeletonGraph& graph, int edge, int node, double reach)
 {
-  const auto points = PointsFrom(graph, edge, node);
-  const auto radii = RadiiFrom(graph, edge, node);
   const double from = graph.Degree(node) >= 3 ? graph.nodes[node].radiusMm : 0.0;
-  std::vector<double> inside, all;
+  std::vector<double> inside, first;
   double s = 0.0;
-  for (std::size_t i = 1; i < points.size(); ++i)
+  std::set<int> seen{ node };
+  for (int e = edge, at = node; e >= 0;)
   {
-    s += (points[i] - points[i - 1]).norm();
-    all.push_back(radii[i]);
-    if (s >= from && s <= from + reach)
-      inside.push_back(radii[i]);
+    const auto points = PointsFrom(graph, e, at);
+    const auto radii = RadiiFrom(graph, e, at);
+    for (std::size_t i = 1; i < points.size(); ++i)
+    {
+      s += (points[i] - points[i - 1]).norm();
+      if (e == edge)
+        first.push_back(radii[i]);
+      if (s >= from && s <= from + reach)
+        inside.push_back(radii[i]);
+    }
+    at = graph.Other(e, at);
+    if (!inside.empty() || !seen.insert(at).second)
+      break;
+    // Still inside the junction's sphere: on along the widest edge (its own median radius).
+    int next = -1;
+    double widest = -1.0;
+    for (int c : graph.nodes[at].edges)
+      if (c != e && graph.edges[c].a != graph.edges[c].b && Median(graph.edges[c].radiusMm) > widest)
+        next = c, widest = Median(graph.edges[c].radiusMm);
+    e = next;
   }
-  return Median(inside.empty() ? all : inside);
+  return Median(inside.empty() ? first : inside);
 }
 
 Eigen::Vector3d BranchDirection(const SkeletonGraph& graph, int edge, int node, double reach)
@@ -203,6 +225,7 @@ VesselPath FollowVessel(const SkeletonGraph& graph, int start, int firstEdge, st
   path.nodes.push_back(start);
   blocked.insert(start);
   int node = graph.Other(firstEdge, start), incoming = firstEdge;
+  path.runsBack = blocked.count(node) > 0; // the first edge leads straight back
   while (blocked.insert(node).second)
   {
     path.nodes.push_back(node);
@@ -210,6 +233,7 @@ VesselPath FollowVessel(const SkeletonGraph& graph, int start, int firstEdge, st
     // a sac) leads only back into the path, and taken, it ended the aorta in the sac.
     // A branch closed off in a loop is a side branch, never the way on.
     std::vector<int> options, closedOff;
+    bool leadsBack = false;
     for (int e : graph.nodes[node].edges)
       if (e != incoming && graph.edges[e].a != graph.edges[e].b)
       {
@@ -218,9 +242,14 @@ VesselPath FollowVessel(const SkeletonGraph& graph, int start, int firstEdge, st
           options.push_back(e);
         else if (way == WayOn::ClosedOff)
           closedOff.push_back(e);
+        else
+          leadsBack = true;
       }
     if (options.empty())
+    {
+      path.runsBack = leadsBack && closedOff.empty();
       break;
+    }
     // Incoming direction over the last `reach` mm.
     std::size_t back = path.points.size() - 1;
     double s = 0.0;
