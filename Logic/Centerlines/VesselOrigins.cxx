@@ -31,6 +31,13 @@ constexpr double belowJunctionToleranceMm = 1.0;
 /// phantom iliac's axis on 0.6–0.9 mm voxels (3 mm slices included); where the funnel's
 /// centerline leaves the axis it is 1.2 mm off within 3 mm.
 constexpr double StraightSeedMm = 10.0;
+/// …and how far down the iliac the straight stretch may reach, mm (BifurcationIliacReachMm for
+/// the first chords). A line fitted to 10–15 mm of centerline scattering ±0.3 mm points 2–3° off
+/// the axis; extrapolated 20–30 mm up to B that is a millimetre across, and B's height error is
+/// the lateral one over the tangent of the iliac's angle off the aorta (25–45°). Lines fitted to
+/// the centerlines of three 2.5–3 mm sacs narrowing into B (issue 46's sweep, seed 246) met
+/// 1.3–3.7 mm above B over 10–30 mm below the junction, within 0.8 mm over 20–45 mm.
+constexpr double StraightIliacReachMm = 45.0;
 constexpr double StraightToleranceMm = 0.5;
 /// A funnel, where the belowJunctionToleranceMm rule is not applied: the aorta narrows into the
 /// junction (a sac with no distal neck) — its inscribed radius falls by more than
@@ -197,8 +204,8 @@ std::vector<Line> BifurcationAxes(const CenterlineTree& tree, bool straight)
       continue;
     // The found origin, not a given one: B does not move with an internal iliac origin given.
     const double origin = FoundInternalIliacOriginAbscissa(tree, side);
-    const double end = std::isfinite(origin) ? std::min(BifurcationIliacReachMm, origin - 5.0)
-                                             : std::min(BifurcationIliacReachMm, iliac.LengthMm());
+    const double reach = straight ? StraightIliacReachMm : BifurcationIliacReachMm;
+    const double end = std::isfinite(origin) ? std::min(reach, origin - 5.0) : std::min(reach, iliac.LengthMm());
     double from = std::min(10.0, 0.5 * end);
     // Below a wide distal aorta the iliac's first centimetre or two still runs in the lumen both
     // iliacs share, on the skeleton of that lumen (lateral of the iliac's axis: B read 2.7 mm high

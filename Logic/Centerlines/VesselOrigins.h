@@ -34,13 +34,20 @@
 ///    (2.3 mm on 1.25 mm slices, 9.8 mm on 3 mm slices in issue 46's sweep), so (1) axes meeting
 ///    below the junction are B on any slices (the kinked-start rule above fell back to the
 ///    junction: B 2.3 mm high), and (2) where that first B lies more than 3 mm below the junction,
-///    B is found again on each iliac's straight stretch — grown up from the chord's last 10 mm
-///    while the next two points lie within 0.5 mm of the line fitted so far, and that least-squares
-///    line as its axis: the centerline runs down the funnel's middle before it joins the iliac's
-///    axis, and chords from 10 mm below a junction 9.8 mm above B leaned 6° and met 3.8 mm above it
-///    on 3 mm slices (0.7 mm after). Not otherwise: the fitted lines move B by up to 0.7 mm on
-///    stretches a millimetre apart, and real common iliacs curve enough (the four AVT cases) that
-///    their straight stretches stop 16–20 mm down (test_funnel_bifurcation.py, FlowDividerPlanTest).
+///    B is found again on each iliac's straight stretch — grown up from the last 10 mm of the
+///    iliac's first min(45 mm, internal iliac origin − 5 mm) while the next two points lie within
+///    0.5 mm of the line fitted so far, and that least-squares line as its axis: the centerline runs
+///    down the funnel's middle before it joins the iliac's axis, and chords from 10 mm below a
+///    junction 9.8 mm above B leaned 6° and met 3.8 mm above it on 3 mm slices (the stretch ending
+///    30 mm down, as the chords: 1.6–2.2 mm above B on 3 mm funnels, within 0.5 mm ending 45 mm
+///    down). Not otherwise: the fitted lines move B by up to 0.7 mm on stretches a millimetre apart,
+///    and real common iliacs curve enough (the four AVT cases) that their straight stretches stop
+///    16–20 mm down — taken on every scan with slices over 1.25 mm, the stretches moved AVT D2's B
+///    by 7.9 mm between the whole scan and the scan cut 40 mm below B. Left: on thick slices the
+///    iliacs' centerlines join their axes 15–20 mm below the junction, and where the sac narrows
+///    gently, or the junction lies less than 3 mm above the chords' meeting point, B reads 2.2–4.6 mm
+///    high (two draws of issue 46's sweep, docs/accuracy.md). (test_funnel_bifurcation.py and
+///    FlowDividerPlanTest hold these rules.)
 ///
 /// A landmark a person gave (CenterlineTree::givenBifurcationLps, givenInternalIliacAbscissaMm;
 /// GivenLandmarks.h) is returned as it is, in place of the rules above.
