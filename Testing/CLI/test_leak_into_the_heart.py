@@ -102,11 +102,14 @@ def main():
     seed_at_coeliac = "0,0,%g" % (coeliac_z + 5)  # in the aorta (on its axis, x = y = 0)
 
     # Whether the skeleton meets in one junction with the shape of a Y depends on the noise: of noise
-    # draws 0-7, draws 0, 1, 2, 4 and 6 give it (named a Y before the plausibility rules; with the
+    # draws 0-7, draws 0, 1, 2, 4 and 6 gave it (named a Y before the plausibility rules; with the
     # seed's window alone, before the window came from the lumen's core, draws 3 and 4), the others
-    # a skeleton without one. Both kinds are run; each must be one clean error, and the first two
-    # must name the junction refused.
-    for noise_seed, refused in ((2, True), (4, True), (5, False)):
+    # a skeleton without one. Since a limb's radius is read past the junction's inscribed sphere
+    # (BranchRadius, issue 46 item 9), only draw 2's junction keeps the shape of a Y (draws 0-7 run
+    # with that change); on draw 4 the error names the scan's extent and the vessels its border cuts
+    # instead. Both kinds are run; each must be one clean error, and draw 2's must name the junction
+    # refused.
+    for noise_seed, refused in ((2, True), (4, False), (5, False)):
         chest = os.path.join(workdir, "heart-and-venae-cavae.nrrd")
         paint_heart(phantom, chest, with_vena_cava=True, noise_seed=noise_seed)
         ending_at_coeliac = os.path.join(workdir, "ending-at-the-coeliac-%d.nrrd" % noise_seed)
