@@ -9,6 +9,7 @@
 #include <limits>
 #include <queue>
 #include <set>
+#include <utility>
 
 #include "Centerlines/AortoIliacSteps.h"
 #include "Centerlines/LimbDivergence.h"
@@ -214,15 +215,16 @@ CenterlineTree LabelAortoIliacTree(const SkeletonGraph& graph, const CenterlineP
   for (const auto& junction : up.junctions)
     for (int e : junction.sideEdges)
     {
-      SideBranch side{ FollowVessel(graph, junction.node, e, mainNodes, reach), junction.node,
-                       BranchDirection(graph, e, junction.node, reach), BranchRadius(graph, e, junction.node, reach) };
+      VesselPath path = FollowVessel(graph, junction.node, e, mainNodes, reach);
       // A strand that wanders through the sac's skeleton and ends where every way leads back into
       // the aorta is part of a loop in the sac (a tunnel beside a thrombus, the dome under an angled
       // neck), not a vessel: two such strands were named the superior mesenteric and a renal, 40 mm
       // below the real renals (the sweep's seed 246 #35: (b) read on the neck's thrombus, 23.1 for
       // 17.4 mm).
-      if (side.path.runsBack)
+      if (path.runsBack)
         continue;
+      SideBranch side{ std::move(path), junction.node, BranchDirection(graph, e, junction.node, reach),
+                       BranchRadius(graph, e, junction.node, reach) };
       side.direction = DirectionOutsideParent(side.path.points, tree.aorta, reach, side.direction);
       side.offset = OffsetOutsideParent(side.path.points, tree.aorta);
       if (junction.abscissa > topAbscissa + 1e-6)

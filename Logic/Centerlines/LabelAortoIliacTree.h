@@ -19,12 +19,13 @@
 ///    (step 2) at least `minimumAortaToIliacRatio` × as wide as each iliac followed down (median
 ///    radius over the whole vessels), and no lower limb giving off an anterior branch (y < −0.6)
 ///    at least `visceralRadiusMm` wide and `minimumBranchLengthMm`/2 long that reaches 5 mm past
-///    its junction's inscribed sphere, a visceral artery (these two rule out large vessels meeting — the aorta against the heart and the venae cavae
-///    when the lumen spreads into them — and each refusal is named in the
-///    no-bifurcation error). Branch directions are taken
+///    its junction's inscribed sphere, a visceral artery (these two rule out large vessels meeting
+///    — the aorta against the heart and the venae cavae when the lumen spreads into them — and
+///    each refusal is named in the no-bifurcation error). Branch directions are taken
 ///    `directionReachMm` along each branch; radii are the median beyond the junction's own
 ///    radius (an edge that ends inside the junction's sphere is followed on through its widest
-///    way: a sac's dome thinning into a blind spur does not carry the sac's radius). Of several such junctions the one with the widest pair of lower branches wins;
+///    way: a sac's dome thinning into a blind spur does not carry the sac's radius). Of several
+///    such junctions the one with the widest pair of lower branches wins;
 ///    a runner-up within 10 % of it, elsewhere, makes the answer ambiguous. The two lower limbs
 ///    must part (LimbDivergence.h): two that run on side by side, a septum apart — the true and
 ///    false lumens of a dissection — are refused; and two that meet again (followed down, they
@@ -65,7 +66,8 @@
 ///    `directionReachMm` long. (Two side edges whose paths meet again beyond the aorta are one
 ///    branch joined twice — a skeleton loop in a long oblique mouth — and the narrower is left
 ///    out; a side edge whose path ends where every way leads back into the aorta, at no end point
-///    of its own, is a strand of a loop in the sac's skeleton, not a branch, and is left out.) Anterior branches 30–250 mm above the bifurcation at least
+///    of its own, is a strand of a loop in the sac's skeleton, not a branch, and is left out.)
+///    Anterior branches 30–250 mm above the bifurcation at least
 ///    max(`visceralRadiusMm`, 0.7 × the widest anterior one's radius) wide are the visceral trunks:
 ///    the lowest is the superior mesenteric, the one above it the coeliac trunk. Lateral branches
 ///    between 20 mm above the bifurcation and 15 mm above the superior mesenteric

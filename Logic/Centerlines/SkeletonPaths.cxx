@@ -113,8 +113,12 @@ double BranchRadius(const SkeletonGraph& graph, int edge, int node, double reach
     int next = -1;
     double widest = -1.0;
     for (int c : graph.nodes[at].edges)
-      if (c != e && graph.edges[c].a != graph.edges[c].b && Median(graph.edges[c].radiusMm) > widest)
-        next = c, widest = Median(graph.edges[c].radiusMm);
+      if (c != e && graph.edges[c].a != graph.edges[c].b)
+      {
+        const double r = Median(graph.edges[c].radiusMm);
+        if (r > widest)
+          next = c, widest = r;
+      }
     e = next;
   }
   return Median(inside.empty() ? first : inside);
