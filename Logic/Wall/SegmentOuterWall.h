@@ -29,12 +29,15 @@
 ///     go too (they still see the neighbour's blurred edge), and the circle is fitted once more.
 ///  5. Where a neighbour hides an arc (`hiddenArcShare` of the rays without a candidate or with
 ///     one more than `hiddenBeyondMm` outside the circle), an ellipse (the algebraic conic through
-///     the kept candidates, the lumen's centre inside) grown from the circle's kept candidates:
-///     refitted with every candidate at most `outlierMm` outside it, until the kept set holds. It
-///     completes the plane instead of the circle when it explains the candidates better (Bayesian
-///     information criterion), keeps at least as many, at least `ellipseMinimumSupport` of the
-///     rays, with its axes' ratio at most `maxAxisRatio` — the circle completing an elliptical
-///     sac's hidden arc under-reads Dmax by up to the axes' difference.
+///     the kept candidates, the lumen's centre inside) grown from the circle's kept candidates —
+///     or, given an `axis` and nothing hidden, where the circle keeps under `circleMinimumShare`
+///     of the candidates (an elliptical sac in fat: only the arcs about its minor axis lie within
+///     `outlierMm` of the best circle), grown from all of them: refitted with every candidate at
+///     most `outlierMm` outside it, until the kept set holds. It completes the plane instead of
+///     the circle when it explains the candidates better (Bayesian information criterion), keeps
+///     at least as many, at least `ellipseMinimumSupport` of the rays, with its axes' ratio at
+///     most `maxAxisRatio` — the circle completing an elliptical sac's hidden arc under-reads Dmax
+///     by up to the axes' difference.
 ///     The candidates kept are *supported*; on every other ray the boundary is the model's
 ///     (circle or ellipse).
 /// The plane records the share of its rays that were supported; with fewer than
@@ -104,6 +107,10 @@ struct OuterWallParams
   /// or one more than `hiddenBeyondMm` outside the circle — a neighbour without a fat plane; [0, 1].
   double hiddenArcShare = 0.1;
   double hiddenBeyondMm = 5.0;
+  /// Given an axis and no hidden arc, the ellipse is tried too where the circle keeps under this
+  /// share of the candidates — an elliptical sac in fat, its major ends outside the circle; [0, 1],
+  /// 0: never.
+  double circleMinimumShare = 0.6;
 };
 
 struct OuterWallPlane
