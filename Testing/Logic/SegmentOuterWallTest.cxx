@@ -334,6 +334,9 @@ TEST(SegmentOuterWall, BadInput_InputError)
   OuterWallParams params;
   params.rays = 4;
   EXPECT_THROW(ValidateOuterWallParams(params), InputError);
+  params = OuterWallParams{};
+  params.circleMinimumShare = 1.5; // a share: [0, 1]
+  EXPECT_THROW(ValidateOuterWallParams(params), InputError);
 }
 
 } // namespace
