@@ -325,6 +325,14 @@ namespace
 constexpr double lumenTailMm = 3.0;
 /// The lumen's level is read this far inside its edge, mm (beyond the tail of a σ ≤ 1.1 mm blur).
 constexpr double lumenLevelDepthMm = 3.0;
+/// The ellipse stands in for a circle that explains under circleMinimumShare of an unhidden plane
+/// only where the axis turns less than this over ±straightAxisHalfMm, degrees: there an elliptical
+/// cut is the sac's own shape (the elliptical sacs of the tests and the sweeps: at most 4.7°);
+/// where it turns more, at the sac's top below an angled neck, the plane ⊥ the smoothed axis cuts
+/// the wall obliquely (8.7–27° under necks of 45°: (b) read 29.3 for 26.5 mm as the ellipse, right
+/// as the circle, which keeps the arcs about the minor axis — the vessel's own width).
+constexpr double straightAxisBendDeg = 6.0;
+constexpr double straightAxisHalfMm = 5.0;
 
 /// Takes the lumen's blurred tail off each ray's samples beyond the lumen's edge. A scanner blurs
 /// attenuation linearly, so beyond a thin wall the lumen's step still adds to the wall-to-fat edge
@@ -576,10 +584,10 @@ OuterWall SegmentOuterWall(const CtImage& ct,
     // not on planes ⊥ the lumen's centerline (no `axis`): where it leans, across a round sac's
     // shoulders, the plane cuts the wall obliquely, the cut is elliptical too (the circle keeps
     // 55–60 %), and those contours' centroids set the axis (with the ellipse: 1.3 mm off the sac's
-    // axis, 0.7 without). Elsewhere the circle decides: on the tilted planes of a sac's flanks an
-    // ellipse tried everywhere took in the blurred shoulder's crossings (thrombus volume 11 % high,
-    // (a) +1.2 mm beside a calcified arc), and one fitted there to the circle's kept rays alone
-    // extrapolated 3–12 mm out.
+    // axis, 0.7 without); nor where the axis bends (straightAxisBendDeg). Elsewhere the circle
+    // decides: on the tilted planes of a sac's flanks an ellipse tried everywhere took in the
+    // blurred shoulder's crossings (thrombus volume 11 % high, (a) +1.2 mm beside a calcified
+    // arc), and one fitted there to the circle's kept rays alone extrapolated 3–12 mm out.
     WallModel model;
     model.circle = circle;
     const auto count = [](const std::vector<bool>& b) { return std::count(b.begin(), b.end(), true); };
@@ -590,8 +598,11 @@ OuterWall SegmentOuterWall(const CtImage& ct,
       visible[k] = candidate[k] > 0.0 && !hidden[k];
     }
     const bool hiddenArc = double(count(hidden)) >= params.hiddenArcShare * K;
-    const bool unexplained =
-      axis && !hiddenArc && double(count(kept)) < params.circleMinimumShare * double(count(visible));
+    const bool unexplained = axis && !hiddenArc &&
+                             double(count(kept)) < params.circleMinimumShare * double(count(visible)) &&
+                             std::acos(std::clamp(TangentAt(*axis, plane.axisAbscissaMm - straightAxisHalfMm)
+                                                    .dot(TangentAt(*axis, plane.axisAbscissaMm + straightAxisHalfMm)),
+                                                  -1.0, 1.0)) < straightAxisBendDeg * pi / 180.0;
     if (circle[2] > 0.0 && (hiddenArc || unexplained))
     {
       std::vector<bool> grown = unexplained ? visible : kept;
