@@ -334,6 +334,13 @@ constexpr double lumenLevelDepthMm = 3.0;
 constexpr double straightAxisBendDeg = 6.0;
 constexpr double straightAxisHalfMm = 5.0;
 
+/// How far the axis turns between straightAxisHalfMm before and after abscissa s, degrees.
+double AxisTurnDeg(const Centerline& axis, double s)
+{
+  const double c = TangentAt(axis, s - straightAxisHalfMm).dot(TangentAt(axis, s + straightAxisHalfMm));
+  return std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / pi;
+}
+
 /// Takes the lumen's blurred tail off each ray's samples beyond the lumen's edge. A scanner blurs
 /// attenuation linearly, so beyond a thin wall the lumen's step still adds to the wall-to-fat edge
 /// and moves its half-maximum outward (+0.2 mm in radius for a 1.5 mm wall, σ 1 mm, a 350 HU lumen
@@ -600,9 +607,7 @@ OuterWall SegmentOuterWall(const CtImage& ct,
     const bool hiddenArc = double(count(hidden)) >= params.hiddenArcShare * K;
     const bool unexplained = axis && !hiddenArc &&
                              double(count(kept)) < params.circleMinimumShare * double(count(visible)) &&
-                             std::acos(std::clamp(TangentAt(*axis, plane.axisAbscissaMm - straightAxisHalfMm)
-                                                    .dot(TangentAt(*axis, plane.axisAbscissaMm + straightAxisHalfMm)),
-                                                  -1.0, 1.0)) < straightAxisBendDeg * pi / 180.0;
+                             AxisTurnDeg(*axis, plane.axisAbscissaMm) < straightAxisBendDeg;
     if (circle[2] > 0.0 && (hiddenArc || unexplained))
     {
       std::vector<bool> grown = unexplained ? visible : kept;
